@@ -1,0 +1,79 @@
+#pragma once
+/// @file Mesh.hpp
+/// The fixed background mesh of the MPM: nodes, elements (one element type per mesh),
+/// element blocks (mapped to materials by name), node sets and side sets (mapped to
+/// boundary conditions by name). Read from Exodus II or made by a built-in generator.
+
+#include <string>
+#include <vector>
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+/// Element shapes of the background mesh. A mesh uses one type for all its blocks.
+enum class ElementType { Tri3, Quad4 };
+
+/// Number of nodes (= number of sides in 2D) of an element type.
+KOKKOS_INLINE_FUNCTION constexpr int nodesPerElement(ElementType type) {
+  return type == ElementType::Tri3 ? 3 : 4;
+}
+
+/// Exodus name of an element type ("TRI3", "QUAD4").
+const char* exodusName(ElementType type);
+
+/// A named group of elements; the deck maps block names to materials. Blocks with no
+/// material are initially empty (no material points) but still part of the grid.
+struct ElementBlock {
+  std::string name;           ///< block name (Exodus block name, or "block_<id>" if unnamed)
+  int id = 0;                 ///< Exodus block id
+  std::vector<int> elements;  ///< element indices (0-based) of this block
+};
+
+/// A named group of nodes, used for solid fixities.
+struct NodeSet {
+  std::string name;        ///< set name (Exodus name, or "nodelist_<id>")
+  int id = 0;              ///< Exodus set id
+  std::vector<int> nodes;  ///< node indices (0-based)
+};
+
+/// A named group of element sides, used for tractions and hydraulic conditions on fixed
+/// boundaries. Side s of an element joins its local nodes s and (s+1) % nodesPerElement
+/// (Exodus convention for 2D elements, stored 0-based here).
+struct SideSet {
+  std::string name;           ///< set name (Exodus name, or "surface_<id>")
+  int id = 0;                 ///< Exodus set id
+  std::vector<int> elements;  ///< element index (0-based) of each side
+  std::vector<int> sides;     ///< local side index (0-based) of each side
+};
+
+/// Background mesh. Views live in MemSpace so kernels read them directly.
+struct Mesh {
+  ElementType type = ElementType::Tri3;
+  /// Node coordinates (m), one row per node.
+  Kokkos::View<Real* [kDim], MemSpace> coordinates;
+  /// Element connectivity (0-based node indices), one row per element, counter-clockwise.
+  Kokkos::View<int**, MemSpace> connectivity;
+  /// Block index (into `blocks`) of each element.
+  Kokkos::View<int*, MemSpace> element_block;
+
+  std::vector<ElementBlock> blocks;
+  std::vector<NodeSet> node_sets;
+  std::vector<SideSet> side_sets;
+
+  int numNodes() const { return static_cast<int>(coordinates.extent(0)); }
+  int numElements() const { return static_cast<int>(connectivity.extent(0)); }
+  int nodesPerElement() const { return argine::nodesPerElement(type); }
+
+  /// Lookups by name; nullptr when absent.
+  const ElementBlock* findBlock(const std::string& name) const;
+  const NodeSet* findNodeSet(const std::string& name) const;
+  const SideSet* findSideSet(const std::string& name) const;
+
+  /// Names, for error messages ("mesh has side sets: base, riverside").
+  std::vector<std::string> blockNames() const;
+  std::vector<std::string> nodeSetNames() const;
+  std::vector<std::string> sideSetNames() const;
+};
+
+}  // namespace argine

@@ -1,0 +1,60 @@
+#pragma once
+/// @file MaterialPoints.hpp
+/// Material points as a structure of arrays of Kokkos Views ("_p" fields in kernels).
+///
+/// Sign conventions (stated once, see doc/theory.md): stresses and strains are positive
+/// in tension; liquid pressure p_L is positive in compression (water pressure below the
+/// water table is positive); suction s = -p_L where p_L < 0 (gas pressure is zero).
+
+#include <string>
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+/// Stress/strain component order in the 4-vectors below (plane strain).
+enum StressComponent { XX = 0, YY = 1, ZZ = 2, XY = 3 };
+
+struct MaterialPoints {
+  template <class T>
+  using View = Kokkos::View<T, MemSpace>;
+
+  int count = 0;  ///< number of points
+
+  // Location
+  View<int*> element;         ///< index of the containing background element
+  View<Real* [kDim]> local;   ///< local (reference-element) coordinates in that element
+  View<Real* [kDim]> position;          ///< current position x (m)
+  View<Real* [kDim]> initial_position;  ///< position at creation / last displacement reset (m)
+  View<int*> material;        ///< material index (into the deck's material list)
+
+  // Kinematics
+  View<Real* [kDim]> displacement;     ///< solid displacement u = x - x0 (m)
+  View<Real* [kDim]> velocity_solid;   ///< v_S (m/s)
+  View<Real* [kDim]> velocity_liquid;  ///< v_L (m/s)
+
+  // Geometry and phase masses
+  View<Real*> volume;          ///< current volume V (m^3 per metre thickness in 2D)
+  View<Real*> initial_volume;  ///< V0 (m^3)
+  View<Real*> mass_solid;      ///< M_S = (1-n) rho_S V, constant (kg)
+  View<Real*> mass_liquid;     ///< M_L = n S_L rho_L V (kg)
+  View<Real*> porosity;        ///< n (-)
+
+  // Liquid state
+  View<Real*> pressure_liquid;   ///< p_L (Pa, compression positive)
+  View<Real*> density_liquid;    ///< rho_L (kg/m^3), weakly compressible (4.13)
+  View<Real*> saturation;        ///< S_L (-)
+  View<Real*> conductivity;      ///< hydraulic conductivity k(S_L) (m/s)
+
+  // Mechanics
+  View<Real* [kStressComponents]> stress_effective;  ///< Bishop effective stress sigma' (Pa)
+  View<Real* [kStressComponents]> strain;            ///< total small-strain accumulation (-)
+  View<Real*> deviatoric_strain;                     ///< equivalent deviatoric strain (-)
+  View<Real*> plastic_strain;                        ///< equivalent plastic strain (-)
+  View<int*> plastic_state;                          ///< 0 elastic, 1 plastic, 2 apex
+
+  /// Allocate all fields for n points, zero-initialised.
+  void allocate(int n);
+};
+
+}  // namespace argine
