@@ -2,7 +2,9 @@
 
 namespace argine {
 
-const char* exodusName(ElementType type) { return type == ElementType::Tri3 ? "TRI3" : "QUAD4"; }
+const char* exodusName(ElementType type) {
+  return type == ElementType::Tri3 ? "TRI3" : "QUAD4";
+}
 
 namespace {
 template <class Set>
@@ -19,11 +21,23 @@ std::vector<std::string> namesOf(const std::vector<Set>& sets) {
 }
 }  // namespace
 
-const ElementBlock* Mesh::findBlock(const std::string& name) const { return findByName(blocks, name); }
-const NodeSet* Mesh::findNodeSet(const std::string& name) const { return findByName(node_sets, name); }
-const SideSet* Mesh::findSideSet(const std::string& name) const { return findByName(side_sets, name); }
-std::vector<std::string> Mesh::blockNames() const { return namesOf(blocks); }
-std::vector<std::string> Mesh::nodeSetNames() const { return namesOf(node_sets); }
-std::vector<std::string> Mesh::sideSetNames() const { return namesOf(side_sets); }
+const ElementBlock* Mesh::findBlock(const std::string& name) const {
+  return findByName(blocks, name);
+}
+const NodeSet* Mesh::findNodeSet(const std::string& name) const {
+  return findByName(node_sets, name);
+}
+const SideSet* Mesh::findSideSet(const std::string& name) const {
+  return findByName(side_sets, name);
+}
+std::vector<std::string> Mesh::blockNames() const {
+  return namesOf(blocks);
+}
+std::vector<std::string> Mesh::nodeSetNames() const {
+  return namesOf(node_sets);
+}
+std::vector<std::string> Mesh::sideSetNames() const {
+  return namesOf(side_sets);
+}
 
 }  // namespace argine

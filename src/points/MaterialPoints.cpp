@@ -4,6 +4,7 @@ namespace argine {
 
 void MaterialPoints::allocate(int n) {
   count = n;
+  id = View<int*>("id_p", n);
   element = View<int*>("element_p", n);
   local = View<Real* [kDim]>("local_p", n);
   position = View<Real* [kDim]>("position_p", n);

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "argine/core/Types.hpp"
+#include "argine/materials/MaterialParameters.hpp"
 #include "argine/mesh/Mesh.hpp"
+#include "argine/timestep/CriterionKind.hpp"
 
 namespace argine {
 
@@ -18,7 +20,7 @@ namespace argine {
 
 /// A polygonal soil region of a generated cross-section (vertices counter-clockwise, m).
 struct PolygonRegion {
-  std::string block;                           ///< element block name given to it
+  std::string block;                          ///< element block name given to it
   std::vector<std::array<Real, 2>> vertices;  ///< polygon vertices (m)
 };
 
@@ -45,58 +47,11 @@ struct MeshSpec {
 
 // ---------------------------------------------------------------- materials
 
-enum class PhaseModel { Dry, Saturated, Unsaturated };
-enum class SolidModel { LinearElastic, MohrCoulomb, SuctionMohrCoulomb };
-enum class RetentionModel { Linear, VanGenuchten, Gardner };
-enum class ConductivityModel { Constant, Hillel, Mualem, Gardner };
-enum class MassBalanceForm { Complete, Simplified };  ///< Eq. 4.12 or Eq. 4.14
-
-struct SolidSpec {
-  SolidModel model = SolidModel::LinearElastic;
-  Real youngs_modulus = 0;    ///< E (Pa)
-  Real poisson_ratio = 0;     ///< nu (-)
-  Real cohesion = 0;          ///< c' (Pa)
-  Real friction_angle = 0;    ///< phi' (rad; the deck gives degrees)
-  Real dilatancy_angle = 0;   ///< psi (rad; the deck gives degrees)
-  Real tensile_strength = 0;  ///< tension cut-off (Pa)
-  // Suction-dependent Mohr-Coulomb (4.23-4.26): c = c' + dc_max (1 - exp(-B s/p_atm)),
-  // phi = phi' + A s / p_atm.
-  Real cohesion_increase_max = 0;   ///< dc_max (Pa)
-  Real cohesion_suction_rate = 0;   ///< B (-)
-  Real friction_suction_rate = 0;   ///< A (rad)
-  Real atmospheric_pressure = 101325.0;  ///< p_atm (Pa)
-};
-
-struct LiquidSpec {
-  Real density = 1000.0;       ///< rho_L at zero pressure (kg/m^3)
-  Real bulk_modulus = 2.2e9;   ///< K_L (Pa), Eq. 4.13
-  Real viscosity = 1.0e-3;     ///< mu_L (Pa s)
-};
-
-struct RetentionSpec {
-  RetentionModel model = RetentionModel::Linear;
-  Real linear_slope = 0;       ///< a_v (1/Pa), Eq. 5.6: S_L = S_max - a_v s
-  Real reference_pressure = 0; ///< p_ref (Pa), van Genuchten Eq. 4.28
-  Real lambda = 0.5;           ///< lambda (-), van Genuchten Eq. 4.28
-  Real gardner_alpha = 0;      ///< alpha (1/Pa), Gardner exponential
-  Real saturation_min = 0;     ///< S_min (-)
-  Real saturation_max = 1;     ///< S_max (-)
-};
-
-struct ConductivitySpec {
-  ConductivityModel model = ConductivityModel::Constant;
-  Real intrinsic_permeability = 0;  ///< kappa (m^2); the deck gives this or k_sat
-  Real saturated_conductivity = 0;  ///< k_sat = kappa rho_L g / mu_L (m/s), g = 9.81
-  Real hillel_exponent = 3;         ///< r (-), Eq. 4.30
-  Real mualem_lambda = 0.5;         ///< lambda* (-), Eq. 4.31
-  Real gardner_alpha = 0;           ///< alpha (1/Pa)
-};
-
 /// Initial state of a material's points (before any initialisation stage).
 struct InitialStateSpec {
-  Real liquid_pressure = 0;          ///< uniform p_L (Pa, compression positive)
-  Real vertical_effective_stress = 0; ///< sigma'_yy (Pa, tension positive)
-  Real earth_pressure_coefficient = 1; ///< K0: sigma'_xx = sigma'_zz = K0 sigma'_yy
+  Real liquid_pressure = 0;             ///< uniform p_L (Pa, compression positive)
+  Real vertical_effective_stress = 0;   ///< sigma'_yy (Pa, tension positive)
+  Real earth_pressure_coefficient = 1;  ///< K0: sigma'_xx = sigma'_zz = K0 sigma'_yy
 };
 
 struct MaterialSpec {
@@ -104,8 +59,8 @@ struct MaterialSpec {
   std::string block;           ///< mesh element block holding this material
   int points_per_element = 3;  ///< 1, 3, 4, 6 or 12
   PhaseModel phase = PhaseModel::Saturated;
-  Real porosity = 0.4;         ///< n0 (-)
-  Real solid_density = 2650;   ///< rho_S (kg/m^3)
+  Real porosity = 0.4;        ///< n0 (-)
+  Real solid_density = 2650;  ///< rho_S (kg/m^3)
   MassBalanceForm mass_balance = MassBalanceForm::Complete;
   SolidSpec solid;
   LiquidSpec liquid;
@@ -118,24 +73,12 @@ struct MaterialSpec {
 
 enum class SolverKind { Explicit, FixedSkeleton, QuasiStatic, ImplicitSeepage };
 
-/// Critical time-step criteria (thesis Sec. 7, Table 4.4, Appendix).
-enum class CriterionKind {
-  CflDry,           ///< Eq. 4.62
-  CflUndrained,     ///< Eq. 4.64
-  Consolidation,    ///< Eq. 4.61
-  Infiltration,     ///< Eq. 4.63
-  UnsaturatedLiquid,   ///< Table 4.4 / Appendix (liquid momentum)
-  UnsaturatedMixture,  ///< Table 4.4 / Appendix (mixture momentum)
-  UnsaturatedCoupled,  ///< Table 4.4 / Appendix (coupled system)
-  Mieremet,         ///< Eq. 4.67 (saturated), as Anura3D codes it
-};
-
 struct TimeStepSpec {
-  bool automatic = true;       ///< false: use fixed_step
-  Real fixed_step = 0;         ///< (s)
-  Real safety_factor = 0.5;    ///< multiplies the minimum critical step
+  bool automatic = true;     ///< false: use fixed_step
+  Real fixed_step = 0;       ///< (s)
+  Real safety_factor = 0.5;  ///< multiplies the minimum critical step
   std::vector<CriterionKind> criteria{CriterionKind::CflUndrained, CriterionKind::Consolidation};
-  int update_interval = 1;     ///< recompute the step every N steps
+  int update_interval = 1;  ///< recompute the step every N steps
 };
 
 enum class BoundaryKind {
@@ -159,11 +102,11 @@ struct BoundarySpec {
 struct StageSpec {
   std::string name;
   SolverKind solver = SolverKind::Explicit;
-  Real duration = 0;           ///< (s)
-  Real gravity = 9.81;         ///< magnitude (m/s^2), acting in -y; 0 switches it off
-  Real local_damping = 0;      ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
-  Real mass_scaling = 1;       ///< factor >= 1 on the nodal masses
-  Real output_interval = 0;    ///< (s); 0: only at the end of the stage
+  Real duration = 0;                 ///< (s)
+  Real gravity = 9.81;               ///< magnitude (m/s^2), acting in -y; 0 switches it off
+  Real local_damping = 0;            ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
+  Real mass_scaling = 1;             ///< factor >= 1 on the nodal masses
+  Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
@@ -177,7 +120,7 @@ struct OutputSpec {
 };
 
 struct Deck {
-  std::string path;       ///< the deck file (absolute)
+  std::string path;  ///< the deck file (absolute)
   std::string title;
   MeshSpec mesh;
   std::vector<MaterialSpec> materials;

@@ -21,12 +21,13 @@ struct MaterialPoints {
 
   int count = 0;  ///< number of points
 
-  // Location
-  View<int*> element;         ///< index of the containing background element
-  View<Real* [kDim]> local;   ///< local (reference-element) coordinates in that element
+  // Identity and location
+  View<int*> id;                        ///< permanent point id (creation index), survives sorting
+  View<int*> element;                   ///< index of the containing background element
+  View<Real* [kDim]> local;             ///< local (reference-element) coordinates in that element
   View<Real* [kDim]> position;          ///< current position x (m)
   View<Real* [kDim]> initial_position;  ///< position at creation / last displacement reset (m)
-  View<int*> material;        ///< material index (into the deck's material list)
+  View<int*> material;                  ///< material index (into the deck's material list)
 
   // Kinematics
   View<Real* [kDim]> displacement;     ///< solid displacement u = x - x0 (m)
@@ -41,10 +42,10 @@ struct MaterialPoints {
   View<Real*> porosity;        ///< n (-)
 
   // Liquid state
-  View<Real*> pressure_liquid;   ///< p_L (Pa, compression positive)
-  View<Real*> density_liquid;    ///< rho_L (kg/m^3), weakly compressible (4.13)
-  View<Real*> saturation;        ///< S_L (-)
-  View<Real*> conductivity;      ///< hydraulic conductivity k(S_L) (m/s)
+  View<Real*> pressure_liquid;  ///< p_L (Pa, compression positive)
+  View<Real*> density_liquid;   ///< rho_L (kg/m^3), weakly compressible (4.13)
+  View<Real*> saturation;       ///< S_L (-)
+  View<Real*> conductivity;     ///< hydraulic conductivity k(S_L) (m/s)
 
   // Mechanics
   View<Real* [kStressComponents]> stress_effective;  ///< Bishop effective stress sigma' (Pa)

@@ -1,0 +1,57 @@
+#pragma once
+/// @file MaterialParameters.hpp
+/// Plain parameter structs of the constitutive, retention and conductivity models, in SI
+/// units. They hold only numbers and enums, so kernels copy them by value.
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+enum class PhaseModel { Dry, Saturated, Unsaturated };
+enum class SolidModel { LinearElastic, MohrCoulomb, SuctionMohrCoulomb };
+enum class RetentionModel { Linear, VanGenuchten, Gardner };
+enum class ConductivityModel { Constant, Hillel, Mualem, Gardner };
+enum class MassBalanceForm { Complete, Simplified };  ///< Eq. 4.12 or Eq. 4.14
+
+struct SolidSpec {
+  SolidModel model = SolidModel::LinearElastic;
+  Real youngs_modulus = 0;    ///< E (Pa)
+  Real poisson_ratio = 0;     ///< nu (-)
+  Real cohesion = 0;          ///< c' (Pa)
+  Real friction_angle = 0;    ///< phi' (rad; the deck gives degrees)
+  Real dilatancy_angle = 0;   ///< psi (rad; the deck gives degrees)
+  Real tensile_strength = 0;  ///< tension cut-off (Pa)
+  // Suction-dependent Mohr-Coulomb (4.23-4.26): c = c' + dc_max (1 - exp(-B s/p_atm)),
+  // phi = phi' + A s / p_atm.
+  Real cohesion_increase_max = 0;        ///< dc_max (Pa)
+  Real cohesion_suction_rate = 0;        ///< B (-)
+  Real friction_suction_rate = 0;        ///< A (rad)
+  Real atmospheric_pressure = 101325.0;  ///< p_atm (Pa)
+};
+
+struct LiquidSpec {
+  Real density = 1000.0;      ///< rho_L at zero pressure (kg/m^3)
+  Real bulk_modulus = 2.2e9;  ///< K_L (Pa), Eq. 4.13
+  Real viscosity = 1.0e-3;    ///< mu_L (Pa s)
+};
+
+struct RetentionSpec {
+  RetentionModel model = RetentionModel::Linear;
+  Real linear_slope = 0;        ///< a_v (1/Pa), Eq. 5.6: S_L = S_max - a_v s
+  Real reference_pressure = 0;  ///< p_ref (Pa), van Genuchten Eq. 4.28
+  Real lambda = 0.5;            ///< lambda (-), van Genuchten Eq. 4.28
+  Real gardner_alpha = 0;       ///< alpha (1/Pa), Gardner exponential
+  Real saturation_min = 0;      ///< S_min (-)
+  Real saturation_max = 1;      ///< S_max (-)
+};
+
+struct ConductivitySpec {
+  ConductivityModel model = ConductivityModel::Constant;
+  Real intrinsic_permeability = 0;  ///< kappa (m^2); the deck gives this or k_sat
+  Real saturated_conductivity = 0;  ///< k_sat = kappa rho_L g / mu_L (m/s), g = 9.81
+  Real hillel_exponent = 3;         ///< r (-), Eq. 4.30
+  Real mualem_lambda = 0.5;         ///< lambda* (-), Eq. 4.31
+  Real gardner_alpha = 0;           ///< alpha (1/Pa)
+};
+
+}  // namespace argine

@@ -1,0 +1,19 @@
+#pragma once
+/// @file CriterionKind.hpp
+/// The critical time-step criteria argine implements (see timestep/Criteria.hpp).
+
+namespace argine {
+
+/// Critical time-step criteria (thesis Sec. 7, Table 4.4, Appendix).
+enum class CriterionKind {
+  CflDry,              ///< Eq. 4.62
+  CflUndrained,        ///< Eq. 4.64
+  Consolidation,       ///< Eq. 4.61
+  Infiltration,        ///< Eq. 4.63
+  UnsaturatedLiquid,   ///< Table 4.4 / Appendix (liquid momentum)
+  UnsaturatedMixture,  ///< Table 4.4 / Appendix (mixture momentum)
+  UnsaturatedCoupled,  ///< Table 4.4 / Appendix (coupled system)
+  Mieremet,            ///< Eq. 4.67 (saturated), as Anura3D codes it
+};
+
+}  // namespace argine
