@@ -52,6 +52,10 @@ struct ConductivitySpec {
   Real hillel_exponent = 3;         ///< r (-), Eq. 4.30
   Real mualem_lambda = 0.5;         ///< lambda* (-), Eq. 4.31
   Real gardner_alpha = 0;           ///< alpha (1/Pa)
+  /// Hillel (4.30) and Mualem (4.31) use S_L as the thesis writes them (false) or the
+  /// effective saturation S_e = (S_L - S_min)/(S_max - S_min) of the usual Mualem-van
+  /// Genuchten form (true).
+  bool use_effective_saturation = false;
 };
 
 }  // namespace argine

@@ -1,0 +1,47 @@
+#pragma once
+/// @file KernelMath.hpp
+/// The few math functions the material and time-step kernels use, wrapped once so that
+/// KOKKOS_INLINE_FUNCTION code calls Kokkos' portable versions (Kokkos 3.4 keeps them in
+/// Kokkos::Experimental; later versions move them to Kokkos::).
+
+#include <Kokkos_MathematicalFunctions.hpp>
+#include <Kokkos_NumericTraits.hpp>
+
+#include "argine/core/Types.hpp"
+
+namespace argine::kmath {
+
+KOKKOS_INLINE_FUNCTION Real sqrt(Real x) {
+  return Kokkos::Experimental::sqrt(x);
+}
+KOKKOS_INLINE_FUNCTION Real exp(Real x) {
+  return Kokkos::Experimental::exp(x);
+}
+KOKKOS_INLINE_FUNCTION Real log(Real x) {
+  return Kokkos::Experimental::log(x);
+}
+KOKKOS_INLINE_FUNCTION Real pow(Real x, Real y) {
+  return Kokkos::Experimental::pow(x, y);
+}
+KOKKOS_INLINE_FUNCTION Real fabs(Real x) {
+  return Kokkos::Experimental::fabs(x);
+}
+KOKKOS_INLINE_FUNCTION Real fmin(Real x, Real y) {
+  return Kokkos::Experimental::fmin(x, y);
+}
+KOKKOS_INLINE_FUNCTION Real fmax(Real x, Real y) {
+  return Kokkos::Experimental::fmax(x, y);
+}
+
+/// +infinity: the "no limit" value of a time-step criterion that does not apply.
+KOKKOS_INLINE_FUNCTION constexpr Real infinity() {
+  return Kokkos::Experimental::infinity<Real>::value;
+}
+
+/// A quiet NaN: poisons a result that must never be used (caught by the run's
+/// non-finite check).
+KOKKOS_INLINE_FUNCTION Real quietNaN() {
+  return Kokkos::Experimental::nan("");
+}
+
+}  // namespace argine::kmath

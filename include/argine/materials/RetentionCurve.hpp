@@ -1,0 +1,100 @@
+#pragma once
+/// @file RetentionCurve.hpp
+/// Soil-water retention curves (SWRC, thesis Sec. 2.5): degree of saturation S_L as a
+/// function of suction, its derivative and its inverse.
+///
+/// Sign convention: argine passes SUCTION s = -p_L >= 0 (Pa); the thesis writes these
+/// curves in its tension-positive liquid pressure, which is the same number. s <= 0 means
+/// saturated: every curve returns S_L = S_max and dS_L/ds = 0 there, so S_L is continuous
+/// at s = 0. The derivative is continuous at s = 0 for van Genuchten (lambda in (0,1));
+/// it jumps from 0 to -a_v (linear) or -(S_max - S_min) alpha (Gardner) when the first
+/// suction appears, which is the shape of those curves.
+///
+/// Effective saturation S_e = (S_L - S_min) / (S_max - S_min) (thesis Eq. 4.28 form):
+///   linear (Eq. 5.6 / 4.27): S_L = S_max - a_v s, clipped below at S_min
+///   van Genuchten (Eq. 4.28): S_e = [1 + (s / p_ref)^(1/(1-lambda))]^(-lambda)
+///   Gardner exponential:       S_e = exp(-alpha s)
+
+#include "argine/core/Types.hpp"
+#include "argine/materials/KernelMath.hpp"
+#include "argine/materials/MaterialParameters.hpp"
+
+namespace argine {
+
+/// S_e = (S_L - S_min) / (S_max - S_min) (-); 1 when S_max == S_min.
+KOKKOS_INLINE_FUNCTION Real effectiveSaturation(const RetentionSpec& spec, Real saturation) {
+  const Real range = spec.saturation_max - spec.saturation_min;
+  if (range <= 0) return 1;
+  return (saturation - spec.saturation_min) / range;
+}
+
+/// Degree of saturation S_L(s) (-), suction s in Pa (s <= 0: S_max).
+KOKKOS_INLINE_FUNCTION Real saturation(const RetentionSpec& spec, Real suction) {
+  if (suction <= 0) return spec.saturation_max;
+  const Real range = spec.saturation_max - spec.saturation_min;
+  switch (spec.model) {
+    case RetentionModel::Linear:  // Eq. 5.6 with S_max in place of 1, clipped at S_min
+      return kmath::fmax(spec.saturation_max - spec.linear_slope * suction, spec.saturation_min);
+    case RetentionModel::VanGenuchten: {  // Eq. 4.28
+      const Real x = suction / spec.reference_pressure;
+      const Real s_e = kmath::pow(1 + kmath::pow(x, 1 / (1 - spec.lambda)), -spec.lambda);
+      return spec.saturation_min + range * s_e;
+    }
+    case RetentionModel::Gardner:
+      return spec.saturation_min + range * kmath::exp(-spec.gardner_alpha * suction);
+  }
+  return spec.saturation_max;
+}
+
+/// dS_L/ds (1/Pa), <= 0 (saturation falls as suction grows); 0 for s <= 0 and on the
+/// clipped (S_L = S_min) part of the linear curve.
+KOKKOS_INLINE_FUNCTION Real saturationSuctionDerivative(const RetentionSpec& spec, Real suction) {
+  if (suction <= 0) return 0;
+  const Real range = spec.saturation_max - spec.saturation_min;
+  switch (spec.model) {
+    case RetentionModel::Linear:
+      return spec.saturation_max - spec.linear_slope * suction > spec.saturation_min
+                 ? -spec.linear_slope
+                 : 0;
+    case RetentionModel::VanGenuchten: {
+      // S_e = (1 + x^m)^(-lambda), x = s/p_ref, m = 1/(1-lambda):
+      // dS_e/ds = -lambda m x^(m-1) (1 + x^m)^(-lambda-1) / p_ref.
+      const Real m = 1 / (1 - spec.lambda);
+      const Real x = suction / spec.reference_pressure;
+      const Real xm = kmath::pow(x, m);
+      return -range * spec.lambda * m * (xm / x) * kmath::pow(1 + xm, -spec.lambda - 1) /
+             spec.reference_pressure;
+    }
+    case RetentionModel::Gardner:
+      return -range * spec.gardner_alpha * kmath::exp(-spec.gardner_alpha * suction);
+  }
+  return 0;
+}
+
+/// Inverse of saturation(): the suction s >= 0 (Pa) at which S_L = `saturation`, used to
+/// initialise points from a prescribed saturation. S_L >= S_max gives 0. For S_L <= S_min
+/// the curve has no unique inverse: the linear curve returns the suction where it reaches
+/// S_min, (S_max - S_min)/a_v; van Genuchten and Gardner return +infinity (S_min is their
+/// asymptote), as does a linear curve with a_v = 0.
+KOKKOS_INLINE_FUNCTION Real suctionFromSaturation(const RetentionSpec& spec, Real saturation) {
+  if (saturation >= spec.saturation_max) return 0;
+  const Real s_e = effectiveSaturation(spec, saturation);
+  switch (spec.model) {
+    case RetentionModel::Linear: {
+      if (spec.linear_slope <= 0) return kmath::infinity();
+      const Real clipped = kmath::fmax(saturation, spec.saturation_min);
+      return (spec.saturation_max - clipped) / spec.linear_slope;
+    }
+    case RetentionModel::VanGenuchten:
+      // S_e^(-1/lambda) - 1 = (s/p_ref)^(1/(1-lambda))
+      if (s_e <= 0) return kmath::infinity();
+      return spec.reference_pressure *
+             kmath::pow(kmath::pow(s_e, -1 / spec.lambda) - 1, 1 - spec.lambda);
+    case RetentionModel::Gardner:
+      if (s_e <= 0 || spec.gardner_alpha <= 0) return kmath::infinity();
+      return -kmath::log(s_e) / spec.gardner_alpha;
+  }
+  return 0;
+}
+
+}  // namespace argine
