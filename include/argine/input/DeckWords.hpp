@@ -1,0 +1,131 @@
+#pragma once
+/// @file DeckWords.hpp
+/// The words a deck uses for each enumerated choice (`Phase Model: unsaturated`,
+/// `Solver: implicit seepage`, ...), in one table per enum. The schema lists the allowed
+/// words from these tables and the reader maps words back to enums through them, so a word
+/// is spelled in exactly one place. Logs and error messages can name values the same way.
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "argine/input/Deck.hpp"
+
+namespace argine {
+
+/// One deck word and the enum value it stands for.
+template <class Enum>
+struct DeckWord {
+  const char* word;  ///< as written in the deck (matched case-insensitively)
+  Enum value;        ///< what it means
+};
+
+inline constexpr DeckWord<PhaseModel> kPhaseModelWords[] = {
+    {"dry", PhaseModel::Dry},
+    {"saturated", PhaseModel::Saturated},
+    {"unsaturated", PhaseModel::Unsaturated},
+};
+
+inline constexpr DeckWord<MassBalanceForm> kMassBalanceWords[] = {
+    {"complete", MassBalanceForm::Complete},
+    {"simplified", MassBalanceForm::Simplified},
+};
+
+inline constexpr DeckWord<SolidModel> kSolidModelWords[] = {
+    {"linear elastic", SolidModel::LinearElastic},
+    {"Mohr-Coulomb", SolidModel::MohrCoulomb},
+    {"suction Mohr-Coulomb", SolidModel::SuctionMohrCoulomb},
+};
+
+inline constexpr DeckWord<RetentionModel> kRetentionModelWords[] = {
+    {"linear", RetentionModel::Linear},
+    {"van Genuchten", RetentionModel::VanGenuchten},
+    {"Gardner", RetentionModel::Gardner},
+};
+
+inline constexpr DeckWord<ConductivityModel> kConductivityModelWords[] = {
+    {"constant", ConductivityModel::Constant},
+    {"Hillel", ConductivityModel::Hillel},
+    {"Mualem", ConductivityModel::Mualem},
+    {"Gardner", ConductivityModel::Gardner},
+};
+
+inline constexpr DeckWord<SolverKind> kSolverWords[] = {
+    {"explicit", SolverKind::Explicit},
+    {"fixed skeleton", SolverKind::FixedSkeleton},
+    {"quasi-static", SolverKind::QuasiStatic},
+    {"implicit seepage", SolverKind::ImplicitSeepage},
+};
+
+inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
+    {"cfl dry", CriterionKind::CflDry},
+    {"cfl undrained", CriterionKind::CflUndrained},
+    {"consolidation", CriterionKind::Consolidation},
+    {"infiltration", CriterionKind::Infiltration},
+    {"unsaturated liquid", CriterionKind::UnsaturatedLiquid},
+    {"unsaturated mixture", CriterionKind::UnsaturatedMixture},
+    {"unsaturated coupled", CriterionKind::UnsaturatedCoupled},
+    {"mieremet", CriterionKind::Mieremet},
+};
+
+inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
+    {"solid fixity", BoundaryKind::SolidFixity},
+    {"impermeable", BoundaryKind::LiquidFixity},
+    {"traction", BoundaryKind::Traction},
+    {"liquid pressure", BoundaryKind::LiquidPressure},
+};
+
+inline constexpr DeckWord<ElementType> kElementWords[] = {
+    {"tri3", ElementType::Tri3},
+    {"quad4", ElementType::Quad4},
+};
+
+inline constexpr DeckWord<GeneratorSpec::Kind> kGeneratorWords[] = {
+    {"rectangle", GeneratorSpec::Kind::Rectangle},
+    {"polygon", GeneratorSpec::Kind::Polygon},
+};
+
+/// Directions of a solid fixity: which velocity components are held at zero.
+struct FixedDirections {
+  bool x;  ///< x component fixed
+  bool y;  ///< y component fixed
+};
+inline constexpr DeckWord<FixedDirections> kDirectionWords[] = {
+    {"x", {true, false}},
+    {"y", {false, true}},
+    {"both", {true, true}},
+};
+
+/// Time-step modes: automatic (from the criteria) or a fixed step.
+inline constexpr DeckWord<bool> kTimeStepModeWords[] = {
+    {"automatic", true},
+    {"fixed", false},
+};
+
+/// All words of a table, in table order (for the schema and messages).
+template <class Enum, std::size_t N>
+std::vector<std::string> deckWords(const DeckWord<Enum> (&table)[N]) {
+  std::vector<std::string> words;
+  for (const auto& entry : table) words.emplace_back(entry.word);
+  return words;
+}
+
+/// The value of a canonical word (as the validated deck holds it). Throws
+/// std::logic_error for a word not in the table: validation has already rejected those.
+template <class Enum, std::size_t N>
+Enum deckValue(const DeckWord<Enum> (&table)[N], const std::string& word) {
+  for (const auto& entry : table)
+    if (word == entry.word) return entry.value;
+  throw std::logic_error("deckValue: '" + word + "' is not a word of this table");
+}
+
+/// The word of a value ("cfl undrained"), for logs and messages.
+template <class Enum, std::size_t N>
+const char* deckWord(const DeckWord<Enum> (&table)[N], Enum value) {
+  for (const auto& entry : table)
+    if (entry.value == value) return entry.word;
+  return "?";
+}
+
+}  // namespace argine

@@ -1,0 +1,102 @@
+// Checks of the deck that involve more than one key; per-key rules are in the schema.
+#include <cmath>
+#include <cstdio>
+
+#include "DeckParts.hpp"
+#include "ValueText.hpp"
+#include "argine/core/Error.hpp"
+#include "argine/input/DeckReader.hpp"
+
+namespace argine {
+
+using input_detail::formatReal;
+
+namespace {
+constexpr Real kPi = 3.14159265358979323846;
+
+/// An angle in radians as degrees with 6 digits (30, not 30.000000000000004).
+std::string degrees(Real radians) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", radians * 180.0 / kPi);
+  return text;
+}
+}  // namespace
+
+namespace input_detail {
+
+namespace {
+
+bool insideBox(const std::array<Real, 2>& point, const GeneratorSpec& generator) {
+  for (int d = 0; d < 2; ++d)
+    if (point[d] < generator.lower_left[d] || point[d] > generator.upper_right[d]) return false;
+  return true;
+}
+
+}  // namespace
+
+void checkOneMaterialPerBlock(const Deck& deck) {
+  for (std::size_t m = 0; m < deck.materials.size(); ++m)
+    for (std::size_t other = 0; other < m; ++other)
+      if (deck.materials[other].block == deck.materials[m].block)
+        throw InputError("Materials/" + deck.materials[m].name + "/Block",
+                         "block '" + deck.materials[m].block + "' already holds material '" +
+                             deck.materials[other].name + "'; each block holds one material");
+}
+
+void checkMeshSpec(const MeshSpec& mesh) {
+  if (!mesh.generate) return;
+  const GeneratorSpec& generator = mesh.generator;
+  const char* axes[] = {"x", "y"};
+  for (int d = 0; d < 2; ++d)
+    if (!(generator.upper_right[d] > generator.lower_left[d]))
+      throw InputError("Mesh/Generate/Upper Right (m)",
+                       std::string(axes[d]) + " must exceed that of Lower Left (m) (" +
+                           formatReal(generator.lower_left[d]) + "), got " +
+                           formatReal(generator.upper_right[d]));
+  for (const auto& region : generator.regions) {
+    const std::string where = "Mesh/Generate/Regions/" + region.block + "/Vertices (m)";
+    if (region.block == "empty")
+      throw InputError("Mesh/Generate/Regions/empty",
+                       "the name 'empty' is reserved for the box outside the regions");
+    Real twice_area = 0;
+    for (std::size_t i = 0; i < region.vertices.size(); ++i) {
+      const auto& a = region.vertices[i];
+      const auto& b = region.vertices[(i + 1) % region.vertices.size()];
+      twice_area += a[0] * b[1] - b[0] * a[1];
+      if (!insideBox(a, generator))
+        throw InputError(where, "vertex " + std::to_string(i + 1) + " (" + formatReal(a[0]) + ", " +
+                                    formatReal(a[1]) +
+                                    ") lies outside the box Lower Left (m) - Upper Right (m)");
+    }
+    if (!(std::abs(twice_area) > 0)) throw InputError(where, "the polygon has zero area");
+  }
+}
+
+}  // namespace input_detail
+
+void checkDeck(const Deck& deck) {
+  input_detail::checkMeshSpec(deck.mesh);
+  if (deck.materials.empty()) throw InputError("Materials", "needs at least one material");
+  if (deck.stages.empty()) throw InputError("Stages", "needs at least one stage");
+  input_detail::checkOneMaterialPerBlock(deck);
+
+  for (const MaterialSpec& material : deck.materials) {
+    const std::string path = "Materials/" + material.name;
+    const RetentionSpec& retention = material.retention;
+    if (!(retention.saturation_min < retention.saturation_max))
+      throw InputError(path + "/Retention/Maximum Saturation",
+                       "must exceed Minimum Saturation (" + formatReal(retention.saturation_min) +
+                           "), got " + formatReal(retention.saturation_max));
+    const SolidSpec& solid = material.solid;
+    if (solid.model != SolidModel::LinearElastic && solid.dilatancy_angle > solid.friction_angle)
+      throw InputError(path + "/Solid/Dilatancy Angle (deg)",
+                       "must not exceed Friction Angle (deg) (" + degrees(solid.friction_angle) +
+                           "), got " + degrees(solid.dilatancy_angle));
+  }
+
+  if (deck.output.name.find('/') != std::string::npos)
+    throw InputError("Output/Name", "must be a file stem without '/', got '" + deck.output.name +
+                                        "' (use Output/Directory)");
+}
+
+}  // namespace argine

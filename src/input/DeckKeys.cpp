@@ -1,0 +1,355 @@
+// The keys of an argine deck. Every key is declared here and nowhere else: the validator,
+// the reader's defaults and doc/deck-reference.md all come from this table.
+#include "argine/input/DeckSchema.hpp"
+#include "argine/input/DeckWords.hpp"
+
+namespace argine {
+
+namespace {
+
+using Words = std::vector<std::string>;
+
+// ---------------------------------------------------------------- Mesh
+
+ListSchema regionKeys() {
+  ListSchema region;
+  region.add(KeySpec::reals("Vertices (m)", "m", 0,
+                            "polygon corners as x0, y0, x1, y1, ... (at least 3 vertices, "
+                            "either orientation)")
+                 .require());
+  return region;
+}
+
+ListSchema generatorKeys() {
+  ListSchema generate;
+  generate.add(KeySpec::choice("Type", deckWords(kGeneratorWords),
+                               "rectangle: one block filling the box; polygon: soil regions "
+                               "inside the box, the rest becomes block `empty`")
+                   .require());
+  generate.add(KeySpec::choice("Element", deckWords(kElementWords), "element shape")
+                   .byDefault(std::string("quad4")));
+  generate.add(
+      KeySpec::real("Element Size (m)", "m", "target element edge length").above(0).require());
+  generate.add(
+      KeySpec::reals("Lower Left (m)", "m", 2, "corner (x_min, y_min) of the box").require());
+  generate.add(
+      KeySpec::reals("Upper Right (m)", "m", 2, "corner (x_max, y_max) of the box").require());
+  generate.add(KeySpec::text("Block",
+                             "element block name of the rectangle; node and side sets "
+                             "`left`, `right`, `bottom`, `top` are made too")
+                   .when("Type", {"rectangle"})
+                   .byDefault(std::string("soil")));
+  generate.add(KeySpec::namedSublists("Regions", "region", regionKeys(),
+                                      "soil regions; each region's name becomes its block name")
+                   .when("Type", {"polygon"})
+                   .require()
+                   .atLeastOneEntry());
+  return generate;
+}
+
+ListSchema meshKeys() {
+  ListSchema mesh;
+  mesh.add(KeySpec::file("Exodus File", "Exodus II background mesh (relative to the deck)"));
+  mesh.add(KeySpec::sublist("Generate", generatorKeys(), "built-in mesh generator"));
+  mesh.exactlyOneOf({"Exodus File", "Generate"});
+  return mesh;
+}
+
+// ---------------------------------------------------------------- Materials
+
+const Words kMohrCoulombModels{"Mohr-Coulomb", "suction Mohr-Coulomb"};
+const Words kWetPhases{"saturated", "unsaturated"};
+
+ListSchema solidKeys() {
+  ListSchema solid;
+  solid.add(KeySpec::choice("Model", deckWords(kSolidModelWords), "constitutive model").require());
+  solid.add(
+      KeySpec::real("Young's Modulus (Pa)", "Pa", "drained Young's modulus E'").above(0).require());
+  solid.add(KeySpec::real("Poisson's Ratio", "-", "drained Poisson's ratio nu'")
+                .above(-1)
+                .below(0.5)
+                .require());
+  solid.add(KeySpec::real("Cohesion (Pa)", "Pa", "effective cohesion c'")
+                .atLeast(0)
+                .when("Model", kMohrCoulombModels)
+                .require());
+  solid.add(KeySpec::real("Friction Angle (deg)", "deg", "effective friction angle phi'")
+                .atLeast(0)
+                .below(90)
+                .when("Model", kMohrCoulombModels)
+                .require());
+  solid.add(KeySpec::real("Dilatancy Angle (deg)", "deg",
+                          "dilatancy angle psi (at most the friction angle)")
+                .atLeast(0)
+                .below(90)
+                .when("Model", kMohrCoulombModels)
+                .byDefault(0.0));
+  solid.add(KeySpec::real("Tensile Strength (Pa)", "Pa", "tension cut-off")
+                .atLeast(0)
+                .when("Model", kMohrCoulombModels)
+                .byDefault(0.0));
+  solid.add(KeySpec::real("Cohesion Increase Max (Pa)", "Pa",
+                          "dc_max in c = c' + dc_max (1 - exp(-B s/p_atm)) (Eq. 4.25)")
+                .atLeast(0)
+                .when("Model", {"suction Mohr-Coulomb"})
+                .require());
+  solid.add(KeySpec::real("Cohesion Suction Rate B", "-", "B in the cohesion law (Eq. 4.25)")
+                .atLeast(0)
+                .when("Model", {"suction Mohr-Coulomb"})
+                .require());
+  solid.add(KeySpec::real("Friction Suction Rate A (deg)", "deg",
+                          "A in phi = phi' + A s/p_atm (Eq. 4.26)")
+                .atLeast(0)
+                .when("Model", {"suction Mohr-Coulomb"})
+                .require());
+  solid.add(KeySpec::real("Atmospheric Pressure (Pa)", "Pa", "p_atm scaling the suction")
+                .above(0)
+                .when("Model", {"suction Mohr-Coulomb"})
+                .byDefault(101325.0));
+  return solid;
+}
+
+ListSchema liquidKeys() {
+  ListSchema liquid;
+  liquid.add(KeySpec::real("Density (kg/m3)", "kg/m3", "liquid density rho_L at zero pressure")
+                 .above(0)
+                 .byDefault(1000.0));
+  liquid.add(KeySpec::real("Bulk Modulus (Pa)", "Pa", "liquid bulk modulus K_L (Eq. 4.13)")
+                 .above(0)
+                 .byDefault(2.2e9));
+  liquid.add(KeySpec::real("Viscosity (Pa s)", "Pa s", "dynamic viscosity mu_L")
+                 .above(0)
+                 .byDefault(1.0e-3));
+  return liquid;
+}
+
+ListSchema retentionKeys() {
+  ListSchema retention;
+  retention.add(
+      KeySpec::choice("Model", deckWords(kRetentionModelWords), "soil-water retention curve S_L(s)")
+          .require());
+  retention.add(KeySpec::real("Slope (1/Pa)", "1/Pa", "a_v in S_L = S_max - a_v s (Eq. 5.6)")
+                    .atLeast(0)
+                    .when("Model", {"linear"})
+                    .require());
+  retention.add(KeySpec::real("Reference Pressure (Pa)", "Pa", "p_ref of van Genuchten (Eq. 4.28)")
+                    .above(0)
+                    .when("Model", {"van Genuchten"})
+                    .require());
+  retention.add(KeySpec::real("Lambda", "-", "lambda of van Genuchten (Eq. 4.28)")
+                    .above(0)
+                    .below(1)
+                    .when("Model", {"van Genuchten"})
+                    .require());
+  retention.add(
+      KeySpec::real("Alpha (1/Pa)", "1/Pa", "alpha in S_e = exp(-alpha s) (Gardner exponential)")
+          .above(0)
+          .when("Model", {"Gardner"})
+          .require());
+  retention.add(KeySpec::real("Minimum Saturation", "-", "residual saturation S_min")
+                    .atLeast(0)
+                    .below(1)
+                    .byDefault(0.0));
+  retention.add(KeySpec::real("Maximum Saturation", "-",
+                              "saturation S_max at zero suction (> Minimum Saturation)")
+                    .above(0)
+                    .atMost(1)
+                    .byDefault(1.0));
+  return retention;
+}
+
+ListSchema conductivityKeys() {
+  ListSchema conductivity;
+  conductivity.add(KeySpec::choice("Model", deckWords(kConductivityModelWords),
+                                   "hydraulic conductivity curve k(S_L)")
+                       .byDefault(std::string("constant")));
+  conductivity.add(KeySpec::real("Intrinsic Permeability (m2)", "m2",
+                                 "kappa; k_sat = kappa rho_L g / mu_L with g = 9.81 m/s2")
+                       .above(0));
+  conductivity.add(KeySpec::real("Saturated Conductivity (m/s)", "m/s",
+                                 "k_sat; kappa = k_sat mu_L / (rho_L g) with g = 9.81 m/s2")
+                       .above(0));
+  conductivity.exactlyOneOf({"Intrinsic Permeability (m2)", "Saturated Conductivity (m/s)"});
+  conductivity.add(KeySpec::real("Exponent", "-", "r in k = k_sat S_e^r (Hillel, Eq. 4.30)")
+                       .above(0)
+                       .when("Model", {"Hillel"})
+                       .byDefault(3.0));
+  conductivity.add(KeySpec::real("Lambda", "-", "lambda* of Mualem (Eq. 4.31)")
+                       .above(0)
+                       .below(1)
+                       .when("Model", {"Mualem"})
+                       .require());
+  conductivity.add(KeySpec::real("Alpha (1/Pa)", "1/Pa", "alpha in k = k_sat exp(-alpha s)")
+                       .above(0)
+                       .when("Model", {"Gardner"})
+                       .require());
+  return conductivity;
+}
+
+ListSchema initialStateKeys() {
+  ListSchema initial;
+  initial.add(KeySpec::real("Liquid Pressure (Pa)", "Pa",
+                            "uniform initial p_L (compression positive; suction is -p_L)")
+                  .when("Phase Model", kWetPhases)
+                  .byDefault(0.0));
+  initial.add(KeySpec::real("Vertical Effective Stress (Pa)", "Pa",
+                            "initial sigma'_yy (tension positive, so compression is negative)")
+                  .atMost(0)
+                  .byDefault(0.0));
+  initial.add(KeySpec::real("K0", "-", "earth pressure coefficient: sigma'_xx = K0 sigma'_yy")
+                  .atLeast(0)
+                  .byDefault(1.0));
+  return initial;
+}
+
+ListSchema materialKeys() {
+  ListSchema material;
+  material.add(KeySpec::text("Block", "mesh element block filled with this material").require());
+  material.add(KeySpec::integer("Points Per Element", "material points seeded in each element")
+                   .onlyIntegers({1, 3, 4, 6, 12})
+                   .byDefault(3LL));
+  material.add(KeySpec::choice("Phase Model", deckWords(kPhaseModelWords),
+                               "dry: solid only; saturated: two-phase, S_L = 1; unsaturated: "
+                               "two-phase with suction")
+                   .byDefault(std::string("saturated")));
+  material.add(KeySpec::real("Porosity", "-", "initial porosity n0").above(0).below(1).require());
+  material.add(KeySpec::real("Solid Density (kg/m3)", "kg/m3", "density of the solid grains rho_S")
+                   .above(0)
+                   .require());
+  material.add(KeySpec::choice("Mass Balance", deckWords(kMassBalanceWords),
+                               "liquid mass balance: complete (Eq. 4.12) or simplified (Eq. 4.14)")
+                   .when("Phase Model", kWetPhases)
+                   .byDefault(std::string("complete")));
+  material.add(KeySpec::sublist("Solid", solidKeys(), "solid skeleton").require());
+  material.add(KeySpec::sublist("Liquid", liquidKeys(), "pore liquid (defaults: water at 20 C)")
+                   .when("Phase Model", kWetPhases));
+  material.add(KeySpec::sublist("Retention", retentionKeys(), "soil-water retention curve")
+                   .when("Phase Model", {"unsaturated"})
+                   .require());
+  material.add(KeySpec::sublist("Conductivity", conductivityKeys(), "hydraulic conductivity")
+                   .when("Phase Model", kWetPhases)
+                   .require());
+  material.add(KeySpec::sublist("Initial State", initialStateKeys(),
+                                "state of the points before the first stage"));
+  return material;
+}
+
+// ---------------------------------------------------------------- Stages
+
+ListSchema timeStepKeys() {
+  ListSchema step;
+  step.add(KeySpec::choice("Mode", deckWords(kTimeStepModeWords),
+                           "automatic: from the critical-step criteria; fixed: Fixed Step (s)")
+               .byDefault(std::string("automatic")));
+  step.add(KeySpec::real("Fixed Step (s)", "s", "the time step")
+               .above(0)
+               .when("Mode", {"fixed"})
+               .require());
+  step.add(KeySpec::real("Safety Factor", "-", "multiplies the smallest critical step")
+               .above(0)
+               .atMost(1)
+               .when("Mode", {"automatic"})
+               .byDefault(0.5));
+  step.add(KeySpec::choices("Criteria", deckWords(kCriterionWords),
+                            "critical-step criteria, a list or a comma-separated string")
+               .when("Mode", {"automatic"})
+               .byDefault(Words{"cfl undrained", "consolidation"}));
+  step.add(KeySpec::integer("Update Interval", "recompute the step every N steps")
+               .atLeast(1)
+               .when("Mode", {"automatic"})
+               .byDefault(1LL));
+  return step;
+}
+
+ListSchema boundaryKeys() {
+  ListSchema boundary;
+  boundary.add(KeySpec::choice("Type", deckWords(kBoundaryWords),
+                               "solid fixity (node set), impermeable (zero relative liquid "
+                               "velocity), traction, liquid pressure (side set)")
+                   .require());
+  boundary.add(KeySpec::text("Node Set", "mesh node set")
+                   .when("Type", {"solid fixity", "impermeable"})
+                   .requireWhen("Type", {"solid fixity"}));
+  boundary.add(KeySpec::text("Side Set", "mesh side set")
+                   .when("Type", {"impermeable", "traction", "liquid pressure"})
+                   .requireWhen("Type", {"traction", "liquid pressure"}));
+  boundary.exactlyOneOf({"Node Set", "Side Set"}, Condition{"Type", {"impermeable"}});
+  boundary.add(
+      KeySpec::choice("Direction", deckWords(kDirectionWords), "velocity components held at zero")
+          .when("Type", {"solid fixity"})
+          .require());
+  boundary.add(KeySpec::reals("Traction (Pa)", "Pa", 2,
+                              "total traction (t_x, t_y), tension positive along the outward "
+                              "normal")
+                   .when("Type", {"traction"})
+                   .require());
+  boundary.add(KeySpec::real("Pressure (Pa)", "Pa", "prescribed p_L (compression positive)")
+                   .when("Type", {"liquid pressure"})
+                   .require());
+  return boundary;
+}
+
+ListSchema stageKeys() {
+  ListSchema stage;
+  stage.add(KeySpec::choice("Solver", deckWords(kSolverWords),
+                            "what moves: explicit dynamic MPM, fixed skeleton (seepage only), "
+                            "quasi-static, or implicit seepage")
+                .require());
+  stage.add(KeySpec::real("Duration (s)", "s", "length of the stage").above(0).require());
+  stage.add(KeySpec::real("Gravity (m/s2)", "m/s2", "gravity magnitude, acting in -y; 0: off")
+                .atLeast(0)
+                .byDefault(9.81));
+  stage.add(KeySpec::real("Local Damping", "-", "alpha: damping force = -alpha |f| sign(v)")
+                .atLeast(0)
+                .below(1)
+                .byDefault(0.0));
+  stage.add(
+      KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
+  stage.add(KeySpec::real("Output Interval (s)", "s", "time between outputs; 0: end of stage only")
+                .atLeast(0)
+                .byDefault(0.0));
+  stage.add(KeySpec::boolean("Reset Displacements", "zero the displacements when the stage starts")
+                .byDefault(false));
+  stage.add(KeySpec::sublist("Time Step", timeStepKeys(), "time-step control"));
+  stage.add(KeySpec::namedSublists("Boundary Conditions", "condition", boundaryKeys(),
+                                   "boundary conditions of this stage"));
+  return stage;
+}
+
+// ---------------------------------------------------------------- Output and the deck
+
+ListSchema outputKeys() {
+  ListSchema output;
+  output.add(KeySpec::text("Directory", "results directory (relative to the working directory)")
+                 .byDefault(std::string("results")));
+  output.add(KeySpec::text("Name", "file stem: `<Name>_grid.e`, `<Name>_points.e`")
+                 .byDefault(std::string("argine")));
+  return output;
+}
+
+ListSchema makeDeckSchema() {
+  ListSchema deck;
+  deck.add(
+      KeySpec::text("Title", "a title for logs and output").allowEmpty().byDefault(std::string()));
+  deck.add(KeySpec::sublist("Mesh", meshKeys(), "background mesh").require());
+  deck.add(KeySpec::namedSublists("Materials", "material", materialKeys(),
+                                  "materials, each filling one element block")
+               .require()
+               .atLeastOneEntry());
+  deck.add(
+      KeySpec::namedSublists("Stages", "stage", stageKeys(), "stages, run in the order written")
+          .require()
+          .atLeastOneEntry());
+  deck.add(KeySpec::sublist("Output", outputKeys(), "result files"));
+  checkSchema(deck);
+  return deck;
+}
+
+}  // namespace
+
+const ListSchema& deckSchema() {
+  static const ListSchema schema = makeDeckSchema();
+  return schema;
+}
+
+}  // namespace argine

@@ -1,0 +1,244 @@
+#include "DeckParts.hpp"
+
+#include <algorithm>
+
+#include "argine/core/Error.hpp"
+#include "argine/input/DeckWords.hpp"
+
+namespace argine::input_detail {
+
+namespace {
+
+constexpr Real kPi = 3.14159265358979323846;
+Real radians(Real degrees) {
+  return degrees * kPi / 180.0;
+}
+
+std::array<Real, 2> pair(const std::vector<double>& values) {
+  return {values[0], values[1]};
+}
+
+/// Twice the signed area of a polygon (> 0 when counter-clockwise).
+Real twiceSignedArea(const std::vector<std::array<Real, 2>>& vertices) {
+  Real sum = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const auto& a = vertices[i];
+    const auto& b = vertices[(i + 1) % vertices.size()];
+    sum += a[0] * b[1] - b[0] * a[1];
+  }
+  return sum;
+}
+
+PolygonRegion parseRegion(const DeckSection& region) {
+  const std::vector<double> values = region.reals("Vertices (m)");
+  const std::string where = region.pathOf("Vertices (m)");
+  if (values.size() % 2 != 0)
+    throw InputError(where, "expected x, y pairs (an even count of numbers), got " +
+                                std::to_string(values.size()) + " numbers");
+  if (values.size() < 6)
+    throw InputError(
+        where, "a polygon needs at least 3 vertices, got " + std::to_string(values.size() / 2));
+  PolygonRegion polygon;
+  polygon.block = region.name();
+  for (std::size_t i = 0; i < values.size(); i += 2)
+    polygon.vertices.push_back({values[i], values[i + 1]});
+  // Either orientation is accepted; the generator wants counter-clockwise.
+  if (twiceSignedArea(polygon.vertices) < 0)
+    std::reverse(polygon.vertices.begin(), polygon.vertices.end());
+  return polygon;
+}
+
+SolidSpec parseSolid(const DeckSection& solid) {
+  SolidSpec spec;
+  spec.model = deckValue(kSolidModelWords, solid.word("Model"));
+  spec.youngs_modulus = solid.real("Young's Modulus (Pa)");
+  spec.poisson_ratio = solid.real("Poisson's Ratio");
+  if (spec.model == SolidModel::LinearElastic) return spec;
+  spec.cohesion = solid.real("Cohesion (Pa)");
+  spec.friction_angle = radians(solid.real("Friction Angle (deg)"));
+  spec.dilatancy_angle = radians(solid.real("Dilatancy Angle (deg)"));
+  spec.tensile_strength = solid.real("Tensile Strength (Pa)");
+  if (spec.model == SolidModel::MohrCoulomb) return spec;
+  spec.cohesion_increase_max = solid.real("Cohesion Increase Max (Pa)");
+  spec.cohesion_suction_rate = solid.real("Cohesion Suction Rate B");
+  spec.friction_suction_rate = radians(solid.real("Friction Suction Rate A (deg)"));
+  spec.atmospheric_pressure = solid.real("Atmospheric Pressure (Pa)");
+  return spec;
+}
+
+LiquidSpec parseLiquid(const DeckSection& liquid) {
+  LiquidSpec spec;
+  spec.density = liquid.real("Density (kg/m3)");
+  spec.bulk_modulus = liquid.real("Bulk Modulus (Pa)");
+  spec.viscosity = liquid.real("Viscosity (Pa s)");
+  return spec;
+}
+
+RetentionSpec parseRetention(const DeckSection& retention) {
+  RetentionSpec spec;
+  spec.model = deckValue(kRetentionModelWords, retention.word("Model"));
+  switch (spec.model) {
+    case RetentionModel::Linear:
+      spec.linear_slope = retention.real("Slope (1/Pa)");
+      break;
+    case RetentionModel::VanGenuchten:
+      spec.reference_pressure = retention.real("Reference Pressure (Pa)");
+      spec.lambda = retention.real("Lambda");
+      break;
+    case RetentionModel::Gardner:
+      spec.gardner_alpha = retention.real("Alpha (1/Pa)");
+      break;
+  }
+  spec.saturation_min = retention.real("Minimum Saturation");
+  spec.saturation_max = retention.real("Maximum Saturation");
+  return spec;
+}
+
+/// Either kappa or k_sat is given; the other follows from k_sat = kappa rho_L g / mu_L.
+ConductivitySpec parseConductivity(const DeckSection& conductivity, const LiquidSpec& liquid) {
+  ConductivitySpec spec;
+  spec.model = deckValue(kConductivityModelWords, conductivity.word("Model"));
+  const Real kappa_to_k = liquid.density * kStandardGravity / liquid.viscosity;
+  if (conductivity.has("Intrinsic Permeability (m2)")) {
+    spec.intrinsic_permeability = conductivity.real("Intrinsic Permeability (m2)");
+    spec.saturated_conductivity = spec.intrinsic_permeability * kappa_to_k;
+  } else {
+    spec.saturated_conductivity = conductivity.real("Saturated Conductivity (m/s)");
+    spec.intrinsic_permeability = spec.saturated_conductivity / kappa_to_k;
+  }
+  switch (spec.model) {
+    case ConductivityModel::Constant:
+      break;
+    case ConductivityModel::Hillel:
+      spec.hillel_exponent = conductivity.real("Exponent");
+      break;
+    case ConductivityModel::Mualem:
+      spec.mualem_lambda = conductivity.real("Lambda");
+      break;
+    case ConductivityModel::Gardner:
+      spec.gardner_alpha = conductivity.real("Alpha (1/Pa)");
+      break;
+  }
+  return spec;
+}
+
+InitialStateSpec parseInitialState(const DeckSection& initial, bool wet) {
+  InitialStateSpec spec;
+  if (wet) spec.liquid_pressure = initial.real("Liquid Pressure (Pa)");
+  spec.vertical_effective_stress = initial.real("Vertical Effective Stress (Pa)");
+  spec.earth_pressure_coefficient = initial.real("K0");
+  return spec;
+}
+
+TimeStepSpec parseTimeStep(const DeckSection& step) {
+  TimeStepSpec spec;
+  spec.automatic = deckValue(kTimeStepModeWords, step.word("Mode"));
+  if (!spec.automatic) spec.fixed_step = step.real("Fixed Step (s)");
+  // With a fixed step these keep their defaults, so the critical step can still be
+  // reported next to the fixed one.
+  spec.safety_factor = step.real("Safety Factor");
+  spec.update_interval = static_cast<int>(step.integer("Update Interval"));
+  spec.criteria.clear();
+  for (const auto& word : step.words("Criteria"))
+    spec.criteria.push_back(deckValue(kCriterionWords, word));
+  return spec;
+}
+
+BoundarySpec parseBoundary(const DeckSection& boundary) {
+  BoundarySpec spec;
+  spec.name = boundary.name();
+  spec.kind = deckValue(kBoundaryWords, boundary.word("Type"));
+  switch (spec.kind) {
+    case BoundaryKind::SolidFixity: {
+      spec.node_set = boundary.text("Node Set");
+      const FixedDirections fixed = deckValue(kDirectionWords, boundary.word("Direction"));
+      spec.fix_x = fixed.x;
+      spec.fix_y = fixed.y;
+      break;
+    }
+    case BoundaryKind::LiquidFixity:
+      if (boundary.has("Node Set")) spec.node_set = boundary.text("Node Set");
+      if (boundary.has("Side Set")) spec.side_set = boundary.text("Side Set");
+      break;
+    case BoundaryKind::Traction:
+      spec.side_set = boundary.text("Side Set");
+      spec.traction = pair(boundary.reals("Traction (Pa)"));
+      break;
+    case BoundaryKind::LiquidPressure:
+      spec.side_set = boundary.text("Side Set");
+      spec.pressure = boundary.real("Pressure (Pa)");
+      break;
+  }
+  return spec;
+}
+
+}  // namespace
+
+MeshSpec parseMesh(const DeckSection& mesh) {
+  MeshSpec spec;
+  if (mesh.has("Exodus File")) {
+    spec.exodus_file = mesh.file("Exodus File");
+    return spec;
+  }
+  spec.generate = true;
+  const DeckSection generate = mesh.section("Generate");
+  GeneratorSpec& generator = spec.generator;
+  generator.kind = deckValue(kGeneratorWords, generate.word("Type"));
+  generator.element = deckValue(kElementWords, generate.word("Element"));
+  generator.element_size = generate.real("Element Size (m)");
+  generator.lower_left = pair(generate.reals("Lower Left (m)"));
+  generator.upper_right = pair(generate.reals("Upper Right (m)"));
+  if (generator.kind == GeneratorSpec::Kind::Rectangle) {
+    generator.block = generate.text("Block");
+  } else {
+    for (const auto& region : generate.entries("Regions"))
+      generator.regions.push_back(parseRegion(region));
+  }
+  return spec;
+}
+
+MaterialSpec parseMaterial(const DeckSection& material) {
+  MaterialSpec spec;
+  spec.name = material.name();
+  spec.block = material.text("Block");
+  spec.points_per_element = static_cast<int>(material.integer("Points Per Element"));
+  spec.phase = deckValue(kPhaseModelWords, material.word("Phase Model"));
+  spec.porosity = material.real("Porosity");
+  spec.solid_density = material.real("Solid Density (kg/m3)");
+  spec.solid = parseSolid(material.section("Solid"));
+  const bool wet = spec.phase != PhaseModel::Dry;
+  if (wet) {
+    spec.mass_balance = deckValue(kMassBalanceWords, material.word("Mass Balance"));
+    spec.liquid = parseLiquid(material.section("Liquid"));
+    spec.conductivity = parseConductivity(material.section("Conductivity"), spec.liquid);
+  }
+  if (spec.phase == PhaseModel::Unsaturated)
+    spec.retention = parseRetention(material.section("Retention"));
+  spec.initial = parseInitialState(material.section("Initial State"), wet);
+  return spec;
+}
+
+StageSpec parseStage(const DeckSection& stage) {
+  StageSpec spec;
+  spec.name = stage.name();
+  spec.solver = deckValue(kSolverWords, stage.word("Solver"));
+  spec.duration = stage.real("Duration (s)");
+  spec.gravity = stage.real("Gravity (m/s2)");
+  spec.local_damping = stage.real("Local Damping");
+  spec.mass_scaling = stage.real("Mass Scaling");
+  spec.output_interval = stage.real("Output Interval (s)");
+  spec.reset_displacements = stage.boolean("Reset Displacements");
+  spec.time_step = parseTimeStep(stage.section("Time Step"));
+  for (const auto& boundary : stage.entries("Boundary Conditions"))
+    spec.boundaries.push_back(parseBoundary(boundary));
+  return spec;
+}
+
+OutputSpec parseOutput(const DeckSection& output) {
+  OutputSpec spec;
+  spec.directory = output.text("Directory");
+  spec.name = output.text("Name");
+  return spec;
+}
+
+}  // namespace argine::input_detail
