@@ -13,6 +13,10 @@ target_link_directories(argine_deps INTERFACE ${Trilinos_LIBRARY_DIRS})
 target_link_libraries(argine_deps INTERFACE
   ${Trilinos_LIBRARIES} ${Trilinos_TPL_LIBRARIES} ExodusII::ExodusII Eigen3::Eigen MPI::MPI_CXX)
 
+# argine uses MPI's C API only; Open MPI's deprecated C++ bindings do not compile cleanly
+# under -Wextra.
+target_compile_definitions(argine_deps INTERFACE OMPI_SKIP_MPICXX MPICH_SKIP_MPICXX)
+
 add_library(argine_warnings INTERFACE)
 target_compile_options(argine_warnings INTERFACE -Wall -Wextra
   $<$<BOOL:${ARGINE_WERROR}>:-Werror>)

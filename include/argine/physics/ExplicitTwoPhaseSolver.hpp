@@ -1,0 +1,170 @@
+#pragma once
+/// @file ExplicitTwoPhaseSolver.hpp
+/// The explicit "2Phase with suction" single-point MPM step (thesis Ch. 4 Sec. 3.3), with
+/// Euler-Cromer time integration (7.10-7.13). One set of material points carries solid and
+/// liquid; the liquid moves relative to the solid. `step(dt)` reads as the algorithm:
+///
+///   mapMassesMomentaAndForces   P2G at t^k: masses 4.38-4.40, drag 4.45, forces 4.41-4.44
+///   solveLiquidMomentum         step 1: a_L from 4.36
+///   solveMixtureMomentum        step 2: a_S from 4.37
+///   applyAccelerationBoundaryConditions   fixities, impermeable boundaries
+///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11), and the remap of the
+///                               new point momenta to the nodes, in one pass
+///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs
+///   computeStrainIncrements     step 4: d eps, div v_L, advective term at the points
+///   updatePointStates           steps 5-7 in one pass over the points, per point:
+///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
+///     updateLiquidPressure      step 5: mass balance 4.12 (or 4.14), conservative form
+///     updateEffectiveStress     step 5: sigma' (4.22), Bishop chi = S_L (4.5)
+///     updateLiquidState         step 6: S_L (SWRC), k (HCC)
+///     updatePointPosition       step 7: x += dt sum N v_S^{k+1} (7.13)
+///   relocatePoints              step 8: grid discarded, points re-located for t^{k+1}
+///   checkStability              non-finite values or runaway kinetic energy -> RunError
+///
+/// Cost: every loop runs over the points or over the ACTIVE nodes (nodes of elements that
+/// hold points); the background mesh is touched only by an O(nodes) byte scan that lists the
+/// active nodes once per step. Empty elements cost nothing else.
+///
+/// Typical use (the Simulation loop):
+///   initialisePointState(deck.materials, points);          // physics/PointInitialisation
+///   ExplicitTwoPhaseSolver solver(mesh, points, deck.materials);
+///   for (const StageSpec& stage : deck.stages) {
+///     solver.beginStage(stage);
+///     const Real end = solver.time() + stage.duration;
+///     while (solver.time() < end) {
+///       const Real dt = std::min(solver.chooseTimeStep().time_step, end - solver.time());
+///       solver.step(dt);                                      // may throw RunError
+///       // solver.diagnostics(), solver.nodalFields() for output
+///     }
+///   }
+
+#include <string>
+#include <vector>
+
+#include "argine/boundary/BoundaryConditions.hpp"
+#include "argine/core/Types.hpp"
+#include "argine/mesh/PointLocator.hpp"
+#include "argine/physics/MaterialTable.hpp"
+#include "argine/physics/MomentumBalance.hpp"
+#include "argine/physics/StabilityCheck.hpp"
+#include "argine/physics/TimeStepControl.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/PointRates.hpp"
+#include "argine/transfer/PointShapes.hpp"
+#include "argine/transfer/TwoPhaseTransfer.hpp"
+
+namespace argine {
+
+struct MaterialPoints;
+struct MaterialSpec;
+struct Mesh;
+struct StageSpec;
+
+/// What the last step did, for logs, probes and output.
+struct StepDiagnostics {
+  long step = 0;                    ///< steps taken since the solver was made
+  Real time = 0;                    ///< time after the last step (s)
+  Real time_step = 0;               ///< dt of the last step (s)
+  Real kinetic_energy_solid = 0;    ///< sum 1/2 M_S |v_S|^2 (J per m thickness)
+  Real kinetic_energy_liquid = 0;   ///< sum 1/2 M_L |v_L|^2 (J per m thickness)
+  Real liquid_mass = 0;             ///< sum M_L (kg per m thickness)
+  int lost_points = 0;              ///< points that left the mesh (element -1)
+  int active_nodes = 0;             ///< nodes the last step computed on
+  TimeStepChoice time_step_choice;  ///< how the last automatic/fixed step was chosen
+};
+
+/// A nodal field for output: name and one value per mesh node (zero off the active nodes).
+struct NamedNodalField {
+  std::string name;                            ///< e.g. "velocity_solid_x"
+  Kokkos::View<const Real*, MemSpace> values;  ///< one value per mesh node
+};
+
+class ExplicitTwoPhaseSolver {
+ public:
+  /// Keeps references to `mesh` and `points` (owned by the caller, who must keep them alive).
+  /// The points must be seeded (element, local, volume) and initialised
+  /// (initialisePointState). Builds the point locator and evaluates the shape functions.
+  ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints& points,
+                         const std::vector<MaterialSpec>& materials);
+
+  /// Replaces the material parameters (a stage that changes e.g. the cohesion); the point
+  /// state is kept, except S_L and k, re-evaluated from the new curves at each point's p_L.
+  /// The phase model of a material must not change (points keep their liquid or lack of it).
+  void setMaterials(const std::vector<MaterialSpec>& materials);
+
+  /// Starts a stage: solver kind (Explicit, QuasiStatic or FixedSkeleton; InputError for
+  /// ImplicitSeepage), gravity, local damping, mass scaling, time-step control, boundary
+  /// conditions (InputError "Stages/<stage>/Boundary Conditions/<name>" for a missing set),
+  /// displacement reset. A fixed-skeleton stage sets the solid velocities to zero.
+  void beginStage(const StageSpec& stage);
+
+  /// The step to take next: automatic (safety factor x minimum critical step, with the
+  /// governing criterion and point) or the stage's fixed step.
+  const TimeStepChoice& chooseTimeStep();
+
+  /// Advances the solution by dt (Sec. 3.3). Throws RunError (time, step, point, quantity)
+  /// when the result is not finite or the kinetic energy runs away; the points then hold
+  /// the failed state, so keep the last good output.
+  void step(Real dt);
+
+  /// Current time (s); starts at 0 and is not reset by beginStage.
+  Real time() const { return time_; }
+  /// Sets the current time (restarts).
+  void setTime(Real time) { time_ = time; }
+  /// Diagnostics of the last step.
+  const StepDiagnostics& diagnostics() const { return diagnostics_; }
+  /// The nodal fields of the last step (t^k masses; velocities v^{k+1} after the remap).
+  const GridFields& grid() const { return grid_; }
+  /// Output copies: mass_solid, mass_liquid, velocity_solid_x/_y, velocity_liquid_x/_y.
+  std::vector<NamedNodalField> nodalFields();
+  /// Names of nodalFields(), in order, for declaring output variables.
+  static std::vector<std::string> nodalFieldNames();
+  /// The current stage's resolved boundary conditions.
+  const StageBoundaryConditions& boundaryConditions() const { return boundaries_; }
+
+  /// The kinetic energy may not exceed this factor times the energy scale of the stage
+  /// ((weight + boundary loads) x mesh size + stored elastic energy + initial kinetic energy,
+  /// see StabilityCheck.hpp). Default 10.
+  void setEnergyGrowthLimit(Real factor) { energy_growth_limit_ = factor; }
+
+ private:
+  // The steps of Sec. 3.3, in order.
+  void mapMassesMomentaAndForces();
+  void solveLiquidMomentum();
+  void solveMixtureMomentum();
+  void applyAccelerationBoundaryConditions();
+  void updatePointVelocities(Real dt);
+  void updateNodalVelocities();
+  void computeStrainIncrements(Real dt);
+  void updatePointStates();
+  void relocatePoints();
+  void checkStability(Real dt);
+
+  const Mesh& mesh_;
+  MaterialPoints& points_;
+  MaterialTable table_;
+  PointLocator locator_;
+  PointShapes shapes_;
+  PointRates rates_;
+  GridFields grid_;
+  ActiveNodes nodes_in_use_;  ///< nodes whose grid fields hold the current/last step
+  ActiveNodes nodes_next_;    ///< nodes of the points' current elements (next step)
+  StageBoundaryConditions boundaries_;
+  TimeStepControl time_step_;
+  MomentumSettings momentum_;
+  Real gravity_ = 0;
+  std::string stage_name_;
+  bool stage_started_ = false;
+
+  Real time_ = 0;
+  StepDiagnostics diagnostics_;
+  PointTotals totals_;     ///< point sums of the last step's state update
+  KineticTotals kinetic_;  ///< kinetic sums of the last step's velocity update
+  Real energy_scale_ = 0;
+  Real mesh_size_ = 0;  ///< diagonal of the mesh's bounding box (m)
+  Real energy_growth_limit_ = 10;
+  std::vector<Kokkos::View<Real*, MemSpace>> output_;  ///< scalar copies for nodalFields()
+};
+
+}  // namespace argine

@@ -1,0 +1,71 @@
+#pragma once
+/// @file TimeStepControl.hpp
+/// The time step of the explicit solver (thesis Sec. 7): automatic = safety factor times the
+/// minimum over material points of the stage's selected critical-step criteria
+/// (timestep/Criteria.hpp), recomputed every `update_interval` steps, with the criterion and
+/// the point that govern it; or a fixed step.
+///
+/// Dry points have no liquid, so every liquid criterion is meaningless there: a dry point is
+/// held to the dry CFL criterion (4.62) alone, whichever criteria the stage selected.
+
+#include <string>
+#include <vector>
+
+#include "argine/core/Types.hpp"
+#include "argine/timestep/CriterionKind.hpp"
+
+namespace argine {
+
+class MaterialTable;
+struct MaterialPoints;
+struct Mesh;
+struct TimeStepSpec;
+
+/// The step chosen and why.
+struct TimeStepChoice {
+  Real time_step = 0;      ///< dt to use (s)
+  bool automatic = false;  ///< from the criteria (true) or fixed (false)
+  Real critical_step = 0;  ///< minimum critical step over points and criteria (s); automatic only
+  CriterionKind governing = CriterionKind::CflDry;  ///< the criterion giving the minimum
+  int point = -1;                                   ///< index of the governing point
+  int point_id = -1;                                ///< its permanent id
+  Real position[kDim] = {0, 0};                     ///< its position (m)
+};
+
+class TimeStepControl {
+ public:
+  TimeStepControl() = default;
+  /// Caches the characteristic size of every element of `mesh`.
+  explicit TimeStepControl(const Mesh& mesh);
+
+  /// Takes the stage's settings; the next call to next() recomputes. Throws InputError
+  /// ("Stages/<stage>/Time Step/...") for a non-positive fixed step or safety factor, or an
+  /// automatic step without criteria.
+  void configure(const TimeStepSpec& spec, Real mass_scaling, const std::string& stage);
+
+  /// The step to take now: recomputed on the first call after configure() and then every
+  /// update_interval calls. Throws RunError when no criterion limits the step, or when the
+  /// minimum critical step is zero (naming the criterion and the point).
+  const TimeStepChoice& next(const MaterialPoints& points, const MaterialTable& table);
+
+  /// The minimum critical step over the points and selected criteria (no safety factor),
+  /// with the governing criterion and point, evaluated now.
+  TimeStepChoice evaluate(const MaterialPoints& points, const MaterialTable& table) const;
+
+  /// The last choice.
+  const TimeStepChoice& last() const { return choice_; }
+
+ private:
+  Kokkos::View<Real*, MemSpace> element_size_;
+  Kokkos::View<CriterionKind*, MemSpace> criteria_;
+  bool automatic_ = true;
+  Real fixed_step_ = 0;
+  Real safety_factor_ = 0.5;
+  Real mass_scaling_ = 1;
+  int update_interval_ = 1;
+  int calls_since_update_ = 0;
+  bool stale_ = true;
+  TimeStepChoice choice_;
+};
+
+}  // namespace argine

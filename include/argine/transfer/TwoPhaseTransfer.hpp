@@ -1,0 +1,67 @@
+#pragma once
+/// @file TwoPhaseTransfer.hpp
+/// The particle <-> grid kernels of the explicit two-phase step (thesis Sec. 3.2-3.3).
+/// P2G kernels scatter with Kokkos::Experimental::ScatterView (plain adds on Serial,
+/// duplicated on OpenMP, atomics on CUDA); G2P kernels read plain Views. Every kernel is a
+/// template on the element's node count, chosen once per call from PointShapes::type.
+///
+/// Dry points (their material carries no liquid, `liquid_m(material) == 0`) add nothing to
+/// the liquid fields, so a node touched only by dry points has no liquid mass and the
+/// physics skips its liquid equation. Points with element < 0 (lost) are skipped.
+///
+/// Sign conventions: stresses tension positive, p_L compression positive. Bishop total
+/// stress (4.5, chi = S_L): sigma = sigma' - S_L p_L m.
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+class ActiveNodes;
+struct GridFields;
+struct MaterialPoints;
+struct PointRates;
+struct PointShapes;
+
+/// 1 for materials that carry liquid (saturated, unsaturated), 0 for dry ones; indexed by
+/// the point's material id.
+using LiquidCarrying = Kokkos::View<const int*, MemSpace>;
+
+/// P2G of the step's left- and right-hand sides, all at time t^k: lumped masses M_S, M_L,
+/// M~_L (4.38-4.40), lumped drag Q_L (4.45, k from the point's conductivity and
+/// g = 9.81 m/s^2, the g that defines k), momenta, internal forces (4.43, 4.44) and gravity
+/// (4.41, 4.42; `gravity` in m/s^2 acting in -y). Boundary loads are added afterwards by the
+/// boundary conditions. The grid must be zero on the nodes the points touch.
+void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
+                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid);
+
+/// Nodal velocities v = momentum / mass and the nodal liquid content rho_L n S_L =
+/// M_L / (sum N V) (4.16) on the active nodes. A node without liquid mass gets v_L = v_S.
+void computeNodalVelocities(const ActiveNodes& active, GridFields& grid);
+
+/// Kinetic sums of the updated point velocities.
+struct KineticTotals {
+  Real solid = 0;             ///< sum 1/2 M_S |v_S|^2 (J per m thickness)
+  Real liquid = 0;            ///< sum 1/2 M_L |v_L|^2 with the M_L of t^k (J per m)
+  int non_finite_points = 0;  ///< points whose updated velocity is not finite
+};
+
+/// Sec. 3.3 steps 3-4 in one pass over the points: the G2P of the nodal accelerations,
+/// v_p += dt sum N a_i for the solid and, at liquid-carrying points, the liquid (Euler-Cromer
+/// 7.10, 7.11); and the P2G of the updated momenta sum N M_S v_S and sum N rho_L V v_L into
+/// the (first zeroed) nodal momenta of the active nodes. Call computeNodalVelocities next.
+/// Returns the kinetic energies of the new velocities.
+KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
+                                                 const LiquidCarrying& liquid_m,
+                                                 const ActiveNodes& active, Real dt,
+                                                 MaterialPoints& points, GridFields& grid);
+
+/// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
+/// dt div v_L and the liquid flux divergence dt div(c w), c = rho_L n S_L, w = v_L - v_S, at
+/// the liquid-carrying points (4.11-4.12 with the advective-gradient term 4.15-4.16; c from
+/// the nodal liquid content), and
+/// the displacement increment dt sum N v_S (7.13). `rates` is reallocated if needed.
+void interpolateVelocityGradients(const MaterialPoints& points, const PointShapes& shapes,
+                                  const LiquidCarrying& liquid_m, const GridFields& grid, Real dt,
+                                  PointRates& rates);
+
+}  // namespace argine

@@ -1,0 +1,310 @@
+#include "argine/boundary/BoundaryConditions.hpp"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "argine/core/Error.hpp"
+#include "argine/input/Deck.hpp"
+#include "argine/mesh/Mesh.hpp"
+#include "argine/mesh/MeshGeometry.hpp"
+
+namespace argine {
+
+namespace {
+
+/// A straight side of the mesh: end nodes, length and outward unit normal.
+struct Side {
+  int a = 0, b = 0;
+  Real length = 0;
+  Real normal[kDim] = {0, 0};
+};
+
+/// Host copies of what the resolution needs.
+struct HostMesh {
+  Kokkos::View<Real* [kDim], MemSpace>::HostMirror coordinates;
+  Kokkos::View<int**, MemSpace>::HostMirror connectivity;
+  int per = 0;
+  explicit HostMesh(const Mesh& mesh)
+      : coordinates(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates)),
+        connectivity(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity)),
+        per(mesh.nodesPerElement()) {}
+
+  /// Side s of element e (local nodes s and s+1, counter-clockwise: outward normal is the
+  /// edge vector turned clockwise).
+  Side side(int e, int s) const {
+    Side side;
+    side.a = connectivity(e, s);
+    side.b = connectivity(e, (s + 1) % per);
+    const Real tx = coordinates(side.b, 0) - coordinates(side.a, 0);
+    const Real ty = coordinates(side.b, 1) - coordinates(side.a, 1);
+    side.length = std::sqrt(tx * tx + ty * ty);
+    side.normal[0] = ty / side.length;
+    side.normal[1] = -tx / side.length;
+    return side;
+  }
+};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? "(none)" : out;
+}
+
+const NodeSet& requireNodeSet(const Mesh& mesh, const std::string& where, const std::string& name) {
+  const NodeSet* set = mesh.findNodeSet(name);
+  if (!set)
+    throw InputError(where, "node set '" + name + "' is not in the mesh; the mesh has node sets: " +
+                                joined(mesh.nodeSetNames()));
+  return *set;
+}
+
+const SideSet& requireSideSet(const Mesh& mesh, const std::string& where, const std::string& name) {
+  const SideSet* set = mesh.findSideSet(name);
+  if (!set)
+    throw InputError(where, "side set '" + name + "' is not in the mesh; the mesh has side sets: " +
+                                joined(mesh.sideSetNames()));
+  return *set;
+}
+
+/// The lock bit of an axis-aligned outward normal; InputError for an inclined side.
+unsigned lockBitOfNormal(const Side& side, const HostMesh& host, const std::string& where) {
+  constexpr Real kAligned = 1e-9;  // |component| below this counts as zero
+  if (std::fabs(side.normal[1]) <= kAligned) return kLiquidLockedX;
+  if (std::fabs(side.normal[0]) <= kAligned) return kLiquidLockedY;
+  std::ostringstream out;
+  out << "impermeable boundaries must be axis-aligned for now (the normal component is "
+         "locked); the side from ("
+      << host.coordinates(side.a, 0) << ", " << host.coordinates(side.a, 1) << ") to ("
+      << host.coordinates(side.b, 0) << ", " << host.coordinates(side.b, 1) << ") has normal ("
+      << side.normal[0] << ", " << side.normal[1] << ")";
+  throw InputError(where, out.str());
+}
+
+/// Per-node lock bits of an impermeable side set.
+std::map<int, unsigned> locksOfSideSet(const SideSet& set, const HostMesh& host,
+                                       const std::string& where) {
+  std::map<int, unsigned> locks;
+  for (std::size_t k = 0; k < set.elements.size(); ++k) {
+    const Side side = host.side(set.elements[k], set.sides[k]);
+    const unsigned bit = lockBitOfNormal(side, host, where);
+    locks[side.a] |= bit;
+    locks[side.b] |= bit;
+  }
+  return locks;
+}
+
+/// Per-node lock bits of an impermeable node set: from the mesh-boundary sides whose two
+/// end nodes are both in the set.
+std::map<int, unsigned> locksOfNodeSet(const Mesh& mesh, const NodeSet& set, const HostMesh& host,
+                                       const std::string& where) {
+  const std::set<int> members(set.nodes.begin(), set.nodes.end());
+  const auto neighbours =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), computeElementNeighbours(mesh));
+  std::map<int, unsigned> locks;
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int s = 0; s < host.per; ++s) {
+      if (neighbours(e, s) >= 0) continue;
+      const Side side = host.side(e, s);
+      if (!members.count(side.a) || !members.count(side.b)) continue;
+      const unsigned bit = lockBitOfNormal(side, host, where);
+      locks[side.a] |= bit;
+      locks[side.b] |= bit;
+    }
+  for (const int node : set.nodes)
+    if (!locks.count(node)) {
+      std::ostringstream out;
+      out << "node " << node + 1 << " (1-based) of node set '" << set.name
+          << "' lies on no mesh-boundary side joining two nodes of the set, so the "
+             "impermeable direction is unknown; use a side set";
+      throw InputError(where, out.str());
+    }
+  return locks;
+}
+
+/// Integrates a constant traction vector (mixture) and/or pressure (liquid and mixture)
+/// over the sides of a side set with linear edge shape functions: each end node of a side
+/// gets the load times L / 2.
+NodalLoads integrateSideLoads(const SideSet& set, const HostMesh& host,
+                              const std::array<Real, 2>& traction, Real pressure) {
+  std::map<int, std::array<Real, 4>> sums;  // node -> mixture x, y, liquid x, y
+  for (std::size_t k = 0; k < set.elements.size(); ++k) {
+    const Side side = host.side(set.elements[k], set.sides[k]);
+    const Real half = 0.5 * side.length;
+    for (const int node : {side.a, side.b}) {
+      auto& f = sums[node];
+      for (int d = 0; d < kDim; ++d) {
+        const Real pressure_force = -pressure * side.normal[d] * half;
+        f[d] += traction[d] * half + pressure_force;
+        f[2 + d] += pressure_force;
+      }
+    }
+  }
+  NodalLoads loads;
+  loads.node = Kokkos::View<int*, MemSpace>("load_node", sums.size());
+  loads.mixture = Kokkos::View<Real* [kDim], MemSpace>("load_mixture", sums.size());
+  loads.liquid = Kokkos::View<Real* [kDim], MemSpace>("load_liquid", sums.size());
+  auto node = Kokkos::create_mirror_view(loads.node);
+  auto mixture = Kokkos::create_mirror_view(loads.mixture);
+  auto liquid = Kokkos::create_mirror_view(loads.liquid);
+  int j = 0;
+  for (const auto& [n, f] : sums) {
+    node(j) = n;
+    for (int d = 0; d < kDim; ++d) {
+      mixture(j, d) = f[d];
+      liquid(j, d) = f[2 + d];
+    }
+    ++j;
+  }
+  Kokkos::deep_copy(loads.node, node);
+  Kokkos::deep_copy(loads.mixture, mixture);
+  Kokkos::deep_copy(loads.liquid, liquid);
+  return loads;
+}
+
+/// Adds `loads` to the nodes that carry mass. Each node appears once per list, so plain
+/// adds are race-free.
+void addLoads(const NodalLoads& loads, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
+              const Kokkos::View<Real* [kDim], MemSpace>& force_mixture_i,
+              const Kokkos::View<Real* [kDim], MemSpace>& force_liquid_i) {
+  const auto node = loads.node;
+  const auto mixture = loads.mixture;
+  const auto liquid = loads.liquid;
+  Kokkos::parallel_for(
+      "add_boundary_loads", Kokkos::RangePolicy<ExecSpace>(0, loads.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = node(j);
+        if (!(mass_solid_i(i) > 0)) return;
+        for (int d = 0; d < kDim; ++d) {
+          force_mixture_i(i, d) += mixture(j, d);
+          force_liquid_i(i, d) += liquid(j, d);
+        }
+      });
+}
+
+Real loadMagnitude(const NodalLoads& loads) {
+  const auto mixture = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), loads.mixture);
+  Real sum = 0;
+  for (int j = 0; j < loads.count(); ++j) sum += std::hypot(mixture(j, 0), mixture(j, 1));
+  return sum;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ SolidFixity
+
+SolidFixity::SolidFixity(std::string name, std::vector<int> nodes, bool fix_x, bool fix_y)
+    : name_(std::move(name)), nodes_(std::move(nodes)), fix_x_(fix_x), fix_y_(fix_y) {}
+
+void SolidFixity::constrain(NodalConstraints& constraints) const {
+  const unsigned bits = (fix_x_ ? kSolidFixedX : 0u) | (fix_y_ ? kSolidFixedY : 0u);
+  for (const int node : nodes_) constraints.add(node, bits);
+}
+
+// ------------------------------------------------------------------ ImpermeableBoundary
+
+ImpermeableBoundary::ImpermeableBoundary(std::string name, std::vector<int> nodes,
+                                         std::vector<unsigned> locked)
+    : name_(std::move(name)), nodes_(std::move(nodes)), locked_(std::move(locked)) {}
+
+void ImpermeableBoundary::constrain(NodalConstraints& constraints) const {
+  for (std::size_t j = 0; j < nodes_.size(); ++j) constraints.add(nodes_[j], locked_[j]);
+}
+
+// ------------------------------------------------------------------ loads
+
+TractionBoundary::TractionBoundary(std::string name, NodalLoads loads)
+    : name_(std::move(name)), loads_(std::move(loads)) {}
+
+void TractionBoundary::addNodalForces(
+    Real /*time: constant for now*/, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_mixture_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_liquid_i) const {
+  addLoads(loads_, mass_solid_i, force_mixture_i, force_liquid_i);
+}
+
+LiquidPressureBoundary::LiquidPressureBoundary(std::string name, NodalLoads loads)
+    : name_(std::move(name)), loads_(std::move(loads)) {}
+
+void LiquidPressureBoundary::addNodalForces(
+    Real /*time: constant for now*/, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_mixture_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_liquid_i) const {
+  addLoads(loads_, mass_solid_i, force_mixture_i, force_liquid_i);
+}
+
+// ------------------------------------------------------------------ StageBoundaryConditions
+
+StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSpec& stage) {
+  const HostMesh host(mesh);
+  for (const BoundarySpec& spec : stage.boundaries) {
+    const std::string where = "Stages/" + stage.name + "/Boundary Conditions/" + spec.name;
+    switch (spec.kind) {
+      case BoundaryKind::SolidFixity: {
+        const NodeSet& set = requireNodeSet(mesh, where, spec.node_set);
+        if (!spec.fix_x && !spec.fix_y)
+          throw InputError(where, "a solid fixity needs a direction (x, y or both)");
+        solid_fixities_.emplace_back(spec.name, set.nodes, spec.fix_x, spec.fix_y);
+        break;
+      }
+      case BoundaryKind::LiquidFixity: {
+        std::map<int, unsigned> locks;
+        if (!spec.side_set.empty()) {
+          locks = locksOfSideSet(requireSideSet(mesh, where, spec.side_set), host, where);
+        } else {
+          const NodeSet& set = requireNodeSet(mesh, where, spec.node_set);
+          if (spec.fix_x || spec.fix_y) {  // explicit directions win over the geometry
+            const unsigned bits =
+                (spec.fix_x ? kLiquidLockedX : 0u) | (spec.fix_y ? kLiquidLockedY : 0u);
+            for (const int node : set.nodes) locks[node] |= bits;
+          } else {
+            locks = locksOfNodeSet(mesh, set, host, where);
+          }
+        }
+        std::vector<int> nodes;
+        std::vector<unsigned> bits;
+        for (const auto& [node, lock] : locks) {
+          nodes.push_back(node);
+          bits.push_back(lock);
+        }
+        impermeable_.emplace_back(spec.name, std::move(nodes), std::move(bits));
+        break;
+      }
+      case BoundaryKind::Traction: {
+        const SideSet& set = requireSideSet(mesh, where, spec.side_set);
+        tractions_.emplace_back(spec.name, integrateSideLoads(set, host, spec.traction, 0.0));
+        break;
+      }
+      case BoundaryKind::LiquidPressure: {
+        const SideSet& set = requireSideSet(mesh, where, spec.side_set);
+        if (spec.pressure == 0) break;  // drained: the natural condition, no load
+        pressures_.emplace_back(spec.name,
+                                integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));
+        break;
+      }
+    }
+  }
+  for (const auto& fixity : solid_fixities_) fixity.constrain(constraints_);
+  for (const auto& boundary : impermeable_) boundary.constrain(constraints_);
+  constraints_.finalise();
+}
+
+void StageBoundaryConditions::addNodalForces(
+    Real time, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_mixture_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& force_liquid_i) const {
+  for (const auto& traction : tractions_)
+    traction.addNodalForces(time, mass_solid_i, force_mixture_i, force_liquid_i);
+  for (const auto& pressure : pressures_)
+    pressure.addNodalForces(time, mass_solid_i, force_mixture_i, force_liquid_i);
+}
+
+Real StageBoundaryConditions::totalLoadMagnitude() const {
+  Real sum = 0;
+  for (const auto& traction : tractions_) sum += loadMagnitude(traction.loads());
+  for (const auto& pressure : pressures_) sum += loadMagnitude(pressure.loads());
+  return sum;
+}
+
+}  // namespace argine

@@ -1,0 +1,42 @@
+#include "argine/boundary/NodalConstraints.hpp"
+
+namespace argine {
+
+void NodalConstraints::finalise() {
+  nodes_ = Kokkos::View<int*, MemSpace>("constrained_nodes", pending_.size());
+  flags_ = Kokkos::View<unsigned*, MemSpace>("constraint_flags", pending_.size());
+  auto nodes = Kokkos::create_mirror_view(nodes_);
+  auto flags = Kokkos::create_mirror_view(flags_);
+  int j = 0;
+  for (const auto& [node, bits] : pending_) {
+    nodes(j) = node;
+    flags(j) = bits;
+    ++j;
+  }
+  Kokkos::deep_copy(nodes_, nodes);
+  Kokkos::deep_copy(flags_, flags);
+}
+
+unsigned NodalConstraints::flagsOf(int node) const {
+  const auto found = pending_.find(node);
+  return found == pending_.end() ? 0u : found->second;
+}
+
+void NodalConstraints::constrainVelocities(
+    const Kokkos::View<Real* [kDim], MemSpace>& velocity_solid_i,
+    const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i) const {
+  const auto nodes = nodes_;
+  const auto flags = flags_;
+  Kokkos::parallel_for(
+      "constrain_velocities", Kokkos::RangePolicy<ExecSpace>(0, count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const unsigned bits = flags(j);
+        for (int d = 0; d < kDim; ++d) {
+          if (bits & solidFixedBit(d)) velocity_solid_i(i, d) = 0;
+          if (bits & liquidLockedBit(d)) velocity_liquid_i(i, d) = velocity_solid_i(i, d);
+        }
+      });
+}
+
+}  // namespace argine

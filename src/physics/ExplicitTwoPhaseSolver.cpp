@@ -1,0 +1,230 @@
+#include "argine/physics/ExplicitTwoPhaseSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "argine/core/Error.hpp"
+#include "argine/input/Deck.hpp"
+#include "argine/mesh/Mesh.hpp"
+#include "argine/physics/LiquidState.hpp"
+#include "argine/physics/PointInitialisation.hpp"
+#include "argine/physics/PointUpdates.hpp"
+#include "argine/physics/StabilityCheck.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/TwoPhaseTransfer.hpp"
+
+namespace argine {
+
+ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints& points,
+                                               const std::vector<MaterialSpec>& materials)
+    : mesh_(mesh),
+      points_(points),
+      table_(materials),
+      locator_(mesh),
+      nodes_in_use_(mesh.numNodes()),
+      nodes_next_(mesh.numNodes()),
+      time_step_(mesh) {
+  checkMaterialsForExplicitSolver(materials);
+  const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  Real low[kDim] = {0, 0}, high[kDim] = {0, 0};
+  for (int i = 0; i < mesh.numNodes(); ++i)
+    for (int d = 0; d < kDim; ++d) {
+      low[d] = i == 0 ? X(i, d) : std::min(low[d], X(i, d));
+      high[d] = i == 0 ? X(i, d) : std::max(high[d], X(i, d));
+    }
+  mesh_size_ = std::hypot(high[0] - low[0], high[1] - low[1]);
+  grid_.allocate(mesh.numNodes());
+  rates_.allocate(points.count);
+  evaluatePointShapes(mesh_, points_, shapes_);
+  nodes_next_.rebuild(mesh_, points_);
+}
+
+void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
+  checkMaterialsForExplicitSolver(materials);
+  table_ = MaterialTable(materials);
+  // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
+  const auto materials_m = table_.materials();
+  const MaterialPoints pts = points_;
+  Kokkos::parallel_for(
+      "refresh_liquid_state", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+      KOKKOS_LAMBDA(const int p) {
+        const PointMaterial& material = materials_m(pts.material(p));
+        if (!carriesLiquid(material.phase)) return;
+        const LiquidState state = liquidState(material, pts.pressure_liquid(p));
+        pts.saturation(p) = state.saturation;
+        pts.conductivity(p) = state.conductivity;
+      });
+}
+
+void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
+  stage_name_ = stage.name;
+  if (stage.solver == SolverKind::ImplicitSeepage)
+    throw InputError("Stages/" + stage.name + "/Solver",
+                     "the explicit two-phase solver runs explicit, quasi-static and fixed "
+                     "skeleton stages; implicit seepage needs the implicit solver");
+  momentum_.local_damping = stage.local_damping;
+  momentum_.mass_scaling = stage.mass_scaling;
+  momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
+  gravity_ = stage.gravity;
+  time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
+  boundaries_ = StageBoundaryConditions(mesh_, stage);
+
+  const MaterialPoints pts = points_;
+  if (stage.reset_displacements)
+    Kokkos::parallel_for(
+        "reset_displacements", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+        KOKKOS_LAMBDA(const int p) {
+          for (int d = 0; d < kDim; ++d) {
+            pts.displacement(p, d) = 0;
+            pts.initial_position(p, d) = pts.position(p, d);
+          }
+        });
+  if (momentum_.fixed_skeleton)
+    Kokkos::parallel_for(
+        "hold_skeleton", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+        KOKKOS_LAMBDA(const int p) {
+          for (int d = 0; d < kDim; ++d) pts.velocity_solid(p, d) = 0;
+        });
+  energy_scale_ =
+      energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  stage_started_ = true;
+}
+
+const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
+  return time_step_.next(points_, table_);
+}
+
+void ExplicitTwoPhaseSolver::step(Real dt) {
+  if (!stage_started_) throw std::logic_error("ExplicitTwoPhaseSolver::step before beginStage");
+  mapMassesMomentaAndForces();            // assembly at t^k (4.38-4.45), boundary loads
+  solveLiquidMomentum();                  // step 1 (4.36)
+  solveMixtureMomentum();                 // step 2 (4.37)
+  applyAccelerationBoundaryConditions();  // fixities, impermeable boundaries
+  updatePointVelocities(dt);              // step 3 (7.10, 7.11)
+  updateNodalVelocities();                // step 4
+  computeStrainIncrements(dt);            // step 4
+  // Steps 5-7 in one pass over the points, per point in this order: updatePorosityAndVolume
+  // (4.9), updateLiquidPressure (4.12 / 4.14), updateEffectiveStress (4.22, 4.5),
+  // updateLiquidState (SWRC, HCC), updatePointPosition (7.13); see PointUpdates.hpp.
+  updatePointStates();
+  relocatePoints();  // step 8
+  time_ += dt;
+  checkStability(dt);
+}
+
+// ------------------------------------------------------------------ the steps
+
+void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
+  // The grid keeps the last step's fields for output until now: clear exactly those nodes,
+  // then work on the nodes of the points' current elements.
+  grid_.zero(nodes_in_use_);
+  std::swap(nodes_in_use_, nodes_next_);
+  mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_);
+  boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
+                             grid_.force_liquid_i);
+  computeNodalVelocities(nodes_in_use_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::solveLiquidMomentum() {
+  argine::solveLiquidMomentum(nodes_in_use_, momentum_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::solveMixtureMomentum() {
+  argine::solveMixtureMomentum(nodes_in_use_, momentum_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions() {
+  constrainAccelerations(boundaries_.constraints(), momentum_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
+  // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),
+  // and sums the kinetic energies, in the same pass over the points.
+  kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
+                                                points_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::updateNodalVelocities() {
+  computeNodalVelocities(nodes_in_use_, grid_);
+  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
+}
+
+void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
+  interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
+}
+
+void ExplicitTwoPhaseSolver::updatePointStates() {
+  totals_ = argine::updatePointStates(table_, rates_, points_);
+}
+
+void ExplicitTwoPhaseSolver::relocatePoints() {
+  diagnostics_.lost_points = relocateAndEvaluateShapes(mesh_, locator_, points_, shapes_);
+  nodes_next_.rebuild(mesh_, points_);
+}
+
+void ExplicitTwoPhaseSolver::checkStability(Real dt) {
+  PointTotals totals = totals_;
+  totals.kinetic_energy_solid = kinetic_.solid;
+  totals.kinetic_energy_liquid = kinetic_.liquid;
+  totals.non_finite_points += kinetic_.non_finite_points;
+  diagnostics_.step += 1;
+  diagnostics_.time = time_;
+  diagnostics_.time_step = dt;
+  diagnostics_.kinetic_energy_solid = totals.kinetic_energy_solid;
+  diagnostics_.kinetic_energy_liquid = totals.kinetic_energy_liquid;
+  diagnostics_.liquid_mass = totals.liquid_mass;
+  diagnostics_.active_nodes = nodes_in_use_.count();
+  diagnostics_.time_step_choice = time_step_.last();
+
+  auto fail = [&](const std::string& what) {
+    std::ostringstream out;
+    out << "unstable at t = " << time_ << " s (step " << diagnostics_.step << ", dt = " << dt
+        << " s, stage " << stage_name_ << "): " << what;
+    throw RunError(out.str());
+  };
+  if (totals.non_finite_points > 0) {
+    const int point = firstNonFinitePoint(points_);
+    std::ostringstream out;
+    out << totals.non_finite_points
+        << " point(s) with non-finite values or collapsed volume, first "
+        << describePoint(points_, point, true);
+    fail(out.str());
+  }
+  const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
+  const Real bound = energy_growth_limit_ * energy_scale_;
+  if (kinetic > bound && kinetic > 0) {
+    std::ostringstream out;
+    out << "kinetic energy " << kinetic << " J/m exceeds " << energy_growth_limit_
+        << " x the stage's energy scale " << energy_scale_
+        << " J/m; most energetic: " << describePoint(points_, mostEnergeticPoint(points_), false);
+    fail(out.str());
+  }
+}
+
+// ------------------------------------------------------------------ output
+
+std::vector<std::string> ExplicitTwoPhaseSolver::nodalFieldNames() {
+  return {"mass_solid",       "mass_liquid",       "velocity_solid_x",
+          "velocity_solid_y", "velocity_liquid_x", "velocity_liquid_y"};
+}
+
+std::vector<NamedNodalField> ExplicitTwoPhaseSolver::nodalFields() {
+  const auto names = nodalFieldNames();
+  const int nodes = grid_.numNodes();
+  if (output_.size() != names.size()) {
+    output_.clear();
+    for (const auto& name : names) output_.emplace_back("output_" + name, nodes);
+  }
+  Kokkos::deep_copy(output_[0], grid_.mass_solid_i);
+  Kokkos::deep_copy(output_[1], grid_.mass_liquid_i);
+  Kokkos::deep_copy(output_[2], Kokkos::subview(grid_.velocity_solid_i, Kokkos::ALL, 0));
+  Kokkos::deep_copy(output_[3], Kokkos::subview(grid_.velocity_solid_i, Kokkos::ALL, 1));
+  Kokkos::deep_copy(output_[4], Kokkos::subview(grid_.velocity_liquid_i, Kokkos::ALL, 0));
+  Kokkos::deep_copy(output_[5], Kokkos::subview(grid_.velocity_liquid_i, Kokkos::ALL, 1));
+  std::vector<NamedNodalField> fields;
+  for (std::size_t k = 0; k < names.size(); ++k) fields.push_back({names[k], output_[k]});
+  return fields;
+}
+
+}  // namespace argine

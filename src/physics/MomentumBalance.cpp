@@ -1,0 +1,91 @@
+#include "argine/physics/MomentumBalance.hpp"
+
+#include "argine/boundary/NodalConstraints.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/GridFields.hpp"
+
+namespace argine {
+
+void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+                         GridFields& grid) {
+  const auto nodes = active.nodes();
+  const GridFields g = grid;
+  const Real alpha = settings.local_damping;
+  const Real scaling = settings.mass_scaling;
+  Kokkos::parallel_for(
+      "solve_liquid_momentum", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const Real mass = g.mass_liquid_intrinsic_i(i);
+        if (!(mass > 0)) {  // only dry points here: no liquid equation
+          g.acceleration_liquid_i(i, 0) = g.acceleration_liquid_i(i, 1) = 0;
+          return;
+        }
+        const Real inverse_mass = 1 / (scaling * mass);
+        for (int d = 0; d < kDim; ++d) {
+          const Real relative = g.velocity_liquid_i(i, d) - g.velocity_solid_i(i, d);
+          const Real force = g.force_liquid_i(i, d) - g.drag_i(i) * relative;
+          const Real damped = force + localDampingForce(alpha, force, g.velocity_liquid_i(i, d));
+          g.acceleration_liquid_i(i, d) = damped * inverse_mass;
+        }
+      });
+}
+
+void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+                          GridFields& grid) {
+  const auto nodes = active.nodes();
+  const GridFields g = grid;
+  const Real alpha = settings.local_damping;
+  const Real scaling = settings.mass_scaling;
+  const bool fixed_skeleton = settings.fixed_skeleton;
+  Kokkos::parallel_for(
+      "solve_mixture_momentum", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const Real mass = g.mass_solid_i(i);
+        if (fixed_skeleton || !(mass > 0)) {
+          g.acceleration_solid_i(i, 0) = g.acceleration_solid_i(i, 1) = 0;
+          return;
+        }
+        const Real inverse_mass = 1 / (scaling * mass);
+        const Real liquid_mass = scaling * g.mass_liquid_i(i);
+        for (int d = 0; d < kDim; ++d) {
+          const Real force = g.force_mixture_i(i, d) - liquid_mass * g.acceleration_liquid_i(i, d);
+          const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+          g.acceleration_solid_i(i, d) = damped * inverse_mass;
+        }
+      });
+}
+
+void constrainAccelerations(const NodalConstraints& constraints, const MomentumSettings& settings,
+                            GridFields& grid) {
+  const auto nodes = constraints.nodes();
+  const auto flags = constraints.flags();
+  const GridFields g = grid;
+  const Real alpha = settings.local_damping;
+  const Real scaling = settings.mass_scaling;
+  const bool fixed_skeleton = settings.fixed_skeleton;
+  Kokkos::parallel_for(
+      "constrain_accelerations", Kokkos::RangePolicy<ExecSpace>(0, constraints.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const unsigned bits = flags(j);
+        const bool has_liquid = g.mass_liquid_intrinsic_i(i) > 0;
+        const Real mixture_mass = scaling * (g.mass_solid_i(i) + g.mass_liquid_i(i));
+        for (int d = 0; d < kDim; ++d) {
+          const bool locked = has_liquid && (bits & liquidLockedBit(d));
+          const bool fixed = fixed_skeleton || (bits & solidFixedBit(d));
+          if (locked && !fixed && mixture_mass > 0) {
+            const Real force = g.force_mixture_i(i, d);
+            const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+            g.acceleration_solid_i(i, d) = g.acceleration_liquid_i(i, d) = damped / mixture_mass;
+          }
+          if (fixed) {
+            g.acceleration_solid_i(i, d) = 0;
+            if (locked) g.acceleration_liquid_i(i, d) = 0;
+          }
+        }
+      });
+}
+
+}  // namespace argine

@@ -1,0 +1,163 @@
+#include "argine/physics/StabilityCheck.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "argine/physics/MaterialTable.hpp"
+#include "argine/points/MaterialPoints.hpp"
+
+namespace argine {
+
+namespace {
+
+KOKKOS_INLINE_FUNCTION Real kineticEnergy(const MaterialPoints& pts, int p) {
+  const Real vs2 = pts.velocity_solid(p, 0) * pts.velocity_solid(p, 0) +
+                   pts.velocity_solid(p, 1) * pts.velocity_solid(p, 1);
+  const Real vl2 = pts.velocity_liquid(p, 0) * pts.velocity_liquid(p, 0) +
+                   pts.velocity_liquid(p, 1) * pts.velocity_liquid(p, 1);
+  return 0.5 * (pts.mass_solid(p) * vs2 + pts.mass_liquid(p) * vl2);
+}
+
+/// The array reduction of sumPointTotals: [KE_S, KE_L, M_L, non-finite count].
+struct TotalsFunctor {
+  using value_type = Real[];
+  using size_type = int;
+  size_type value_count = 4;
+  MaterialPoints pts;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int p, value_type sum) const {
+    addPointTotals(pts, p, sum);
+  }
+  KOKKOS_INLINE_FUNCTION void init(value_type sum) const {
+    for (int k = 0; k < value_count; ++k) sum[k] = 0;
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type dst, const volatile value_type src) const {
+    for (int k = 0; k < value_count; ++k) dst[k] += src[k];
+  }
+};
+
+}  // namespace
+
+PointTotals pointTotalsOf(const Real sums[4]) {
+  PointTotals totals;
+  totals.kinetic_energy_solid = sums[0];
+  totals.kinetic_energy_liquid = sums[1];
+  totals.liquid_mass = sums[2];
+  totals.non_finite_points = static_cast<int>(sums[3]);
+  return totals;
+}
+
+PointTotals sumPointTotals(const MaterialPoints& points) {
+  Real sums[4] = {0, 0, 0, 0};
+  TotalsFunctor functor;
+  functor.pts = points;
+  Kokkos::parallel_reduce("point_totals", Kokkos::RangePolicy<ExecSpace>(0, points.count), functor,
+                          sums);
+  return pointTotalsOf(sums);
+}
+
+int firstNonFinitePoint(const MaterialPoints& points) {
+  const MaterialPoints pts = points;
+  int first = std::numeric_limits<int>::max();
+  Kokkos::parallel_reduce(
+      "first_non_finite_point", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, int& min) {
+        if (!pointIsValid(pts, p) && p < min) min = p;
+      },
+      Kokkos::Min<int>(first));
+  return first == std::numeric_limits<int>::max() ? -1 : first;
+}
+
+int mostEnergeticPoint(const MaterialPoints& points) {
+  if (points.count == 0) return -1;
+  const MaterialPoints pts = points;
+  using Reducer = Kokkos::MaxLoc<Real, int>;
+  Reducer::value_type best;
+  Kokkos::parallel_reduce(
+      "most_energetic_point", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Reducer::value_type& max) {
+        const Real energy = kineticEnergy(pts, p);
+        if (energy > max.val) {
+          max.val = energy;
+          max.loc = p;
+        }
+      },
+      Reducer(best));
+  return best.loc >= 0 && best.loc < points.count ? best.loc : 0;
+}
+
+std::string describePoint(const MaterialPoints& points, int index, bool non_finite) {
+  auto one = std::make_pair(index, index + 1);
+  auto copy = [&](const auto& view) {
+    return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(view, one));
+  };
+  auto copy2 = [&](const auto& view) {
+    return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(),
+                                               Kokkos::subview(view, one, Kokkos::ALL));
+  };
+  const auto id = copy(points.id);
+  const auto position = copy2(points.position);
+  std::ostringstream out;
+  out << "point " << id(0) << " (index " << index << ") at (" << position(0, 0) << ", "
+      << position(0, 1) << ")";
+  if (!non_finite) return out.str();
+
+  auto report = [&](const char* name, Real value) {
+    out << ": " << name << " is " << value;
+    return out.str();
+  };
+  const char* axis[] = {"x", "y"};
+  const char* component[] = {"xx", "yy", "zz", "xy"};
+  const auto velocity_solid = copy2(points.velocity_solid);
+  const auto velocity_liquid = copy2(points.velocity_liquid);
+  const auto stress = copy2(points.stress_effective);
+  const auto pressure = copy(points.pressure_liquid);
+  const auto volume = copy(points.volume);
+  for (int d = 0; d < kDim; ++d)
+    if (!std::isfinite(position(0, d)))
+      return report((std::string("position ") + axis[d]).c_str(), position(0, d));
+  for (int d = 0; d < kDim; ++d)
+    if (!std::isfinite(velocity_solid(0, d)))
+      return report((std::string("solid velocity ") + axis[d]).c_str(), velocity_solid(0, d));
+  for (int d = 0; d < kDim; ++d)
+    if (!std::isfinite(velocity_liquid(0, d)))
+      return report((std::string("liquid velocity ") + axis[d]).c_str(), velocity_liquid(0, d));
+  if (!std::isfinite(pressure(0))) return report("liquid pressure", pressure(0));
+  for (int c = 0; c < kStressComponents; ++c)
+    if (!std::isfinite(stress(0, c)))
+      return report((std::string("effective stress ") + component[c]).c_str(), stress(0, c));
+  if (!std::isfinite(volume(0)) || !(volume(0) > 0)) return report("volume", volume(0));
+  return out.str();
+}
+
+Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real gravity,
+                 Real boundary_load, Real size) {
+  const MaterialPoints pts = points;
+  const auto materials_m = table.materials();
+  Real weight = 0, stored = 0;
+  Kokkos::parallel_reduce(
+      "energy_scale_weight", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Real& w) { w += pts.mass_solid(p) + pts.mass_liquid(p); }, weight);
+  Kokkos::parallel_reduce(
+      "energy_scale_stored", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Real& e) {
+        const PointMaterial& material = materials_m(pts.material(p));
+        Real s2 = 0;
+        for (int c = 0; c < kStressComponents; ++c)
+          s2 += pts.stress_effective(p, c) * pts.stress_effective(p, c);
+        const Real young = material.solid.youngs_modulus;
+        if (young > 0) e += pts.volume(p) * s2 / (2 * young);
+        if (carriesLiquid(material.phase)) {
+          const Real pressure = pts.pressure_liquid(p);
+          e += pts.volume(p) * pts.porosity(p) * pressure * pressure /
+               (2 * material.liquid.bulk_modulus);
+        }
+      },
+      stored);
+  const PointTotals totals = sumPointTotals(points);
+  const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
+  return (weight * gravity + boundary_load) * size + stored + kinetic;
+}
+
+}  // namespace argine

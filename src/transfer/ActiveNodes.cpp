@@ -1,0 +1,47 @@
+#include "argine/transfer/ActiveNodes.hpp"
+
+#include "argine/mesh/Mesh.hpp"
+#include "argine/points/MaterialPoints.hpp"
+
+namespace argine {
+
+ActiveNodes::ActiveNodes(int num_nodes)
+    : flag_("active_flag_i", num_nodes), nodes_("active_nodes", num_nodes) {}
+
+void ActiveNodes::rebuild(const Mesh& mesh, const MaterialPoints& points) {
+  if (static_cast<int>(flag_.extent(0)) != mesh.numNodes()) *this = ActiveNodes(mesh.numNodes());
+  auto flag = flag_;
+  auto nodes = nodes_;
+  const auto connectivity = mesh.connectivity;
+  const auto element_p = points.element;
+  const int nodes_per_element = mesh.nodesPerElement();
+
+  // Mark: every point writes 1 to its element's nodes (equal values, so no race matters).
+  Kokkos::parallel_for(
+      "active_nodes_mark", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        const int e = element_p(p);
+        if (e < 0) return;
+        for (int a = 0; a < nodes_per_element; ++a) flag(connectivity(e, a)) = 1;
+      });
+
+  // Compact the flags into an ascending list (a byte-cheap scan of all nodes).
+  int count = 0;
+  Kokkos::parallel_scan(
+      "active_nodes_compact", Kokkos::RangePolicy<ExecSpace>(0, mesh.numNodes()),
+      KOKKOS_LAMBDA(const int i, int& offset, const bool final) {
+        if (flag(i)) {
+          if (final) nodes(offset) = i;
+          ++offset;
+        }
+      },
+      count);
+
+  // Clear the flags again, touching only the listed nodes.
+  Kokkos::parallel_for(
+      "active_nodes_clear", Kokkos::RangePolicy<ExecSpace>(0, count),
+      KOKKOS_LAMBDA(const int j) { flag(nodes(j)) = 0; });
+  count_ = count;
+}
+
+}  // namespace argine

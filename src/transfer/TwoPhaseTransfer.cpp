@@ -1,0 +1,328 @@
+#include "argine/transfer/TwoPhaseTransfer.hpp"
+
+#include <Kokkos_ScatterView.hpp>
+
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/PointRates.hpp"
+#include "argine/transfer/PointShapes.hpp"
+
+namespace argine {
+
+namespace {
+
+namespace KE = Kokkos::Experimental;
+
+/// Calls f(std::integral_constant<int, nodes>) for the element node count of `shapes`.
+template <class Function>
+void withNodeCount(const PointShapes& shapes, Function&& f) {
+  if (shapes.type == ElementType::Tri3)
+    f(std::integral_constant<int, 3>{});
+  else
+    f(std::integral_constant<int, 4>{});
+}
+
+template <int kNodes>
+void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
+                         const LiquidCarrying& liquid_m, Real gravity, GridFields& grid) {
+  const auto node_p = shapes.node_p;
+  const auto value_p = shapes.value_p;
+  const auto gradient_p = shapes.gradient_p;
+  const auto material_p = points.material;
+  const auto volume_p = points.volume;
+  const auto mass_solid_p = points.mass_solid;
+  const auto mass_liquid_p = points.mass_liquid;
+  const auto density_liquid_p = points.density_liquid;
+  const auto porosity_p = points.porosity;
+  const auto saturation_p = points.saturation;
+  const auto conductivity_p = points.conductivity;
+  const auto pressure_p = points.pressure_liquid;
+  const auto stress_p = points.stress_effective;
+  const auto velocity_solid_p = points.velocity_solid;
+  const auto velocity_liquid_p = points.velocity_liquid;
+
+  auto mass_solid_sv = KE::create_scatter_view(grid.mass_solid_i);
+  auto mass_liquid_sv = KE::create_scatter_view(grid.mass_liquid_i);
+  auto mass_intrinsic_sv = KE::create_scatter_view(grid.mass_liquid_intrinsic_i);
+  auto drag_sv = KE::create_scatter_view(grid.drag_i);
+  auto volume_liquid_sv = KE::create_scatter_view(grid.volume_liquid_i);
+  auto momentum_solid_sv = KE::create_scatter_view(grid.momentum_solid_i);
+  auto momentum_liquid_sv = KE::create_scatter_view(grid.momentum_liquid_i);
+  auto force_mixture_sv = KE::create_scatter_view(grid.force_mixture_i);
+  auto force_liquid_sv = KE::create_scatter_view(grid.force_liquid_i);
+
+  Kokkos::parallel_for(
+      "p2g_two_phase", Kokkos::RangePolicy<ExecSpace>(0, points.count), KOKKOS_LAMBDA(const int p) {
+        if (node_p(p, 0) < 0) return;
+        auto mass_solid_i = mass_solid_sv.access();
+        auto momentum_solid_i = momentum_solid_sv.access();
+        auto force_mixture_i = force_mixture_sv.access();
+
+        const Real volume = volume_p(p);
+        const Real m_solid = mass_solid_p(p);
+        const bool wet = liquid_m(material_p(p)) != 0;
+        const Real m_liquid = wet ? mass_liquid_p(p) : 0;
+        // Bishop total stress, chi = S_L (4.5), p_L compression positive.
+        const Real bishop = wet ? saturation_p(p) * pressure_p(p) : 0;
+        const Real sxx = stress_p(p, XX) - bishop;
+        const Real syy = stress_p(p, YY) - bishop;
+        const Real sxy = stress_p(p, XY);
+        const Real weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
+        const Real vsx = velocity_solid_p(p, 0), vsy = velocity_solid_p(p, 1);
+
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+          mass_solid_i(i) += N * m_solid;
+          momentum_solid_i(i, 0) += N * m_solid * vsx;
+          momentum_solid_i(i, 1) += N * m_solid * vsy;
+          force_mixture_i(i, 0) += -(sxx * dx + sxy * dy) * volume;
+          force_mixture_i(i, 1) += -(sxy * dx + syy * dy) * volume + N * weight_mixture;
+        }
+        if (!wet) return;
+
+        auto mass_liquid_i = mass_liquid_sv.access();
+        auto mass_intrinsic_i = mass_intrinsic_sv.access();
+        auto drag_i = drag_sv.access();
+        auto volume_liquid_i = volume_liquid_sv.access();
+        auto momentum_liquid_i = momentum_liquid_sv.access();
+        auto force_liquid_i = force_liquid_sv.access();
+        const Real rho = density_liquid_p(p);
+        const Real m_intrinsic = rho * volume;  // 4.46
+        // Darcy drag per unit liquid volume n S_L rho_L g / k (4.2-4.3, 4.45), g = 9.81.
+        const Real drag =
+            porosity_p(p) * saturation_p(p) * rho * kStandardGravity / conductivity_p(p) * volume;
+        const Real pressure_volume = pressure_p(p) * volume;
+        const Real weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
+        const Real vlx = velocity_liquid_p(p, 0), vly = velocity_liquid_p(p, 1);
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          mass_liquid_i(i) += N * m_liquid;
+          mass_intrinsic_i(i) += N * m_intrinsic;
+          drag_i(i) += N * drag;
+          volume_liquid_i(i) += N * volume;
+          momentum_liquid_i(i, 0) += N * m_intrinsic * vlx;
+          momentum_liquid_i(i, 1) += N * m_intrinsic * vly;
+          // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
+          force_liquid_i(i, 0) += gradient_p(p, a, 0) * pressure_volume;
+          force_liquid_i(i, 1) += gradient_p(p, a, 1) * pressure_volume + N * weight_liquid;
+        }
+      });
+
+  KE::contribute(grid.mass_solid_i, mass_solid_sv);
+  KE::contribute(grid.mass_liquid_i, mass_liquid_sv);
+  KE::contribute(grid.mass_liquid_intrinsic_i, mass_intrinsic_sv);
+  KE::contribute(grid.drag_i, drag_sv);
+  KE::contribute(grid.volume_liquid_i, volume_liquid_sv);
+  KE::contribute(grid.momentum_solid_i, momentum_solid_sv);
+  KE::contribute(grid.momentum_liquid_i, momentum_liquid_sv);
+  KE::contribute(grid.force_mixture_i, force_mixture_sv);
+  KE::contribute(grid.force_liquid_i, force_liquid_sv);
+}
+
+template <int kNodes>
+KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
+                                                const LiquidCarrying& liquid_m, Real dt,
+                                                MaterialPoints& points, GridFields& grid) {
+  const auto node_p = shapes.node_p;
+  const auto value_p = shapes.value_p;
+  const auto material_p = points.material;
+  const auto volume_p = points.volume;
+  const auto mass_solid_p = points.mass_solid;
+  const auto mass_liquid_p = points.mass_liquid;
+  const auto density_liquid_p = points.density_liquid;
+  const auto velocity_solid_p = points.velocity_solid;
+  const auto velocity_liquid_p = points.velocity_liquid;
+  const auto acceleration_solid_i = grid.acceleration_solid_i;
+  const auto acceleration_liquid_i = grid.acceleration_liquid_i;
+  auto momentum_solid_sv = KE::create_scatter_view(grid.momentum_solid_i);
+  auto momentum_liquid_sv = KE::create_scatter_view(grid.momentum_liquid_i);
+  Real kinetic_solid = 0, kinetic_liquid = 0;
+  int non_finite = 0;
+  Kokkos::parallel_reduce(
+      "g2p_velocities_p2g_momenta", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Real& ks, Real& kl, int& bad) {
+        if (node_p(p, 0) < 0) return;
+        const bool wet = liquid_m(material_p(p)) != 0;
+        Real as[kDim] = {0, 0}, al[kDim] = {0, 0};
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          as[0] += N * acceleration_solid_i(i, 0);
+          as[1] += N * acceleration_solid_i(i, 1);
+          if (wet) {
+            al[0] += N * acceleration_liquid_i(i, 0);
+            al[1] += N * acceleration_liquid_i(i, 1);
+          }
+        }
+        const Real vsx = velocity_solid_p(p, 0) + dt * as[0];
+        const Real vsy = velocity_solid_p(p, 1) + dt * as[1];
+        velocity_solid_p(p, 0) = vsx;
+        velocity_solid_p(p, 1) = vsy;
+        const Real ms = mass_solid_p(p);
+        ks += 0.5 * ms * (vsx * vsx + vsy * vsy);
+        if (!(Kokkos::Experimental::isfinite(vsx) && Kokkos::Experimental::isfinite(vsy))) ++bad;
+        auto momentum_solid_i = momentum_solid_sv.access();
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          momentum_solid_i(i, 0) += N * ms * vsx;
+          momentum_solid_i(i, 1) += N * ms * vsy;
+        }
+        if (!wet) return;
+        const Real vlx = velocity_liquid_p(p, 0) + dt * al[0];
+        const Real vly = velocity_liquid_p(p, 1) + dt * al[1];
+        velocity_liquid_p(p, 0) = vlx;
+        velocity_liquid_p(p, 1) = vly;
+        kl += 0.5 * mass_liquid_p(p) * (vlx * vlx + vly * vly);
+        if (!(Kokkos::Experimental::isfinite(vlx) && Kokkos::Experimental::isfinite(vly))) ++bad;
+        auto momentum_liquid_i = momentum_liquid_sv.access();
+        const Real ml = density_liquid_p(p) * volume_p(p);
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          momentum_liquid_i(i, 0) += N * ml * vlx;
+          momentum_liquid_i(i, 1) += N * ml * vly;
+        }
+      },
+      kinetic_solid, kinetic_liquid, non_finite);
+  KE::contribute(grid.momentum_solid_i, momentum_solid_sv);
+  KE::contribute(grid.momentum_liquid_i, momentum_liquid_sv);
+  return KineticTotals{kinetic_solid, kinetic_liquid, non_finite};
+}
+
+template <int kNodes>
+void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
+                                      const LiquidCarrying& liquid_m, const GridFields& grid,
+                                      Real dt, PointRates& rates) {
+  const auto node_p = shapes.node_p;
+  const auto value_p = shapes.value_p;
+  const auto gradient_p = shapes.gradient_p;
+  const auto material_p = points.material;
+  const auto velocity_solid_i = grid.velocity_solid_i;
+  const auto velocity_liquid_i = grid.velocity_liquid_i;
+  const auto liquid_content_i = grid.liquid_content_i;
+  const auto strain_increment_p = rates.strain_increment_p;
+  const auto divergence_p = rates.liquid_divergence_increment_p;
+  const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
+  const auto displacement_increment_p = rates.displacement_increment_p;
+  Kokkos::parallel_for(
+      "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        if (node_p(p, 0) < 0) {
+          for (int c = 0; c < kStressComponents; ++c) strain_increment_p(p, c) = 0;
+          displacement_increment_p(p, 0) = displacement_increment_p(p, 1) = 0;
+          divergence_p(p) = 0;
+          flux_divergence_p(p) = 0;
+          return;
+        }
+        Real L[kDim][kDim] = {{0, 0}, {0, 0}};  // L_jk = d v_S,j / d x_k
+        Real v[kDim] = {0, 0};
+        for (int a = 0; a < kNodes; ++a) {
+          const int i = node_p(p, a);
+          const Real N = value_p(p, a);
+          const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+          const Real vx = velocity_solid_i(i, 0), vy = velocity_solid_i(i, 1);
+          L[0][0] += vx * dx;
+          L[0][1] += vx * dy;
+          L[1][0] += vy * dx;
+          L[1][1] += vy * dy;
+          v[0] += N * vx;
+          v[1] += N * vy;
+        }
+        strain_increment_p(p, XX) = dt * L[0][0];
+        strain_increment_p(p, YY) = dt * L[1][1];
+        strain_increment_p(p, ZZ) = 0;                               // plane strain
+        strain_increment_p(p, XY) = 0.5 * dt * (L[0][1] + L[1][0]);  // tensor shear
+        displacement_increment_p(p, 0) = dt * v[0];
+        displacement_increment_p(p, 1) = dt * v[1];
+
+        Real divergence = 0, relative_divergence = 0, content = 0;
+        Real w[kDim] = {0, 0}, gradient[kDim] = {0, 0};
+        if (liquid_m(material_p(p)) != 0) {
+          for (int a = 0; a < kNodes; ++a) {
+            const int i = node_p(p, a);
+            const Real N = value_p(p, a);
+            const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+            const Real vlx = velocity_liquid_i(i, 0), vly = velocity_liquid_i(i, 1);
+            const Real wx = vlx - velocity_solid_i(i, 0), wy = vly - velocity_solid_i(i, 1);
+            divergence += vlx * dx + vly * dy;
+            relative_divergence += wx * dx + wy * dy;
+            w[0] += N * wx;
+            w[1] += N * wy;
+            content += N * liquid_content_i(i);
+            gradient[0] += liquid_content_i(i) * dx;
+            gradient[1] += liquid_content_i(i) * dy;
+          }
+        }
+        divergence_p(p) = dt * divergence;
+        // div(c w) of the interpolated fields: its point sum is the boundary flux up to the
+        // quadrature error of the points, so a closed domain keeps its liquid mass.
+        flux_divergence_p(p) =
+            dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]);
+      });
+}
+
+}  // namespace
+
+void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
+                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid) {
+  withNodeCount(shapes, [&](auto nodes) {
+    mapPointsToGridImpl<decltype(nodes)::value>(points, shapes, liquid_m, gravity, grid);
+  });
+}
+
+void computeNodalVelocities(const ActiveNodes& active, GridFields& grid) {
+  const auto nodes = active.nodes();
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "nodal_velocities", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const Real ms = g.mass_solid_i(i);
+        for (int d = 0; d < kDim; ++d)
+          g.velocity_solid_i(i, d) = ms > 0 ? g.momentum_solid_i(i, d) / ms : 0;
+        const Real ml = g.mass_liquid_intrinsic_i(i);
+        for (int d = 0; d < kDim; ++d)
+          g.velocity_liquid_i(i, d) =
+              ml > 0 ? g.momentum_liquid_i(i, d) / ml : g.velocity_solid_i(i, d);
+        const Real vl = g.volume_liquid_i(i);
+        g.liquid_content_i(i) = vl > 0 ? g.mass_liquid_i(i) / vl : 0;
+      });
+}
+
+KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
+                                                 const LiquidCarrying& liquid_m,
+                                                 const ActiveNodes& active, Real dt,
+                                                 MaterialPoints& points, GridFields& grid) {
+  const auto nodes = active.nodes();
+  const auto momentum_solid_i = grid.momentum_solid_i;
+  const auto momentum_liquid_i = grid.momentum_liquid_i;
+  Kokkos::parallel_for(
+      "zero_momenta", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int d = 0; d < kDim; ++d) momentum_solid_i(i, d) = momentum_liquid_i(i, d) = 0;
+      });
+  KineticTotals totals;
+  withNodeCount(shapes, [&](auto count) {
+    totals = updateVelocitiesAndMapMomentaImpl<decltype(count)::value>(shapes, liquid_m, dt, points,
+                                                                       grid);
+  });
+  return totals;
+}
+
+void interpolateVelocityGradients(const MaterialPoints& points, const PointShapes& shapes,
+                                  const LiquidCarrying& liquid_m, const GridFields& grid, Real dt,
+                                  PointRates& rates) {
+  if (rates.count() != points.count) rates.allocate(points.count);
+  withNodeCount(shapes, [&](auto nodes) {
+    interpolateVelocityGradientsImpl<decltype(nodes)::value>(points, shapes, liquid_m, grid, dt,
+                                                             rates);
+  });
+}
+
+}  // namespace argine

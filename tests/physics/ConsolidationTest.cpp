@@ -1,0 +1,247 @@
+// [2Phase][Explicit] Liquid flow: Terzaghi consolidation, closed-column mass conservation,
+// fixed-skeleton drainage, dry material next to saturated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Harness.hpp"
+
+namespace argine {
+namespace {
+
+using test::hostCopy;
+using test::makeStage;
+using test::runUntil;
+
+/// Terzaghi's excess pore pressure (drained top at z = 0, impermeable base at z = H):
+/// p(z, t) = sum_m 2 p0 / M sin(M z / H) exp(-M^2 T), M = pi (2m + 1) / 2, T = c_v t / H^2.
+Real terzaghi(Real p0, Real z, Real height, Real time_factor) {
+  Real p = 0;
+  for (int m = 0; m < 200; ++m) {
+    const Real M = M_PI * (2 * m + 1) / 2;
+    p += 2 * p0 / M * std::sin(M * z / height) * std::exp(-M * M * time_factor);
+  }
+  return p;
+}
+
+/// Saturated column for consolidation: E = 1e7 Pa, nu = 0 (E_c = 1e7, m_v = 1e-7 1/Pa),
+/// n = 0.4, K_L = 2e7 Pa, k = 1e-3 m/s; H = 1 m in 10 elements of 0.1 m, width 0.1 m.
+/// Hand values:
+///   B  = m_v / (m_v + n/K_L) = 1e-7 / 1.2e-7 = 0.833333       p0 = B q = 8333.33 Pa
+///   c_v = k / (gamma_w (m_v + n/K_L)) = 1e-3 / (1000 * 9.81 * 1.2e-7) = 0.849473 m^2/s
+///   (gamma_w = rho_L g with the g = 9.81 that defines k).
+MaterialSpec consolidationClay() {
+  return test::elasticMaterial("clay", PhaseModel::Saturated, 1e7, 0.0, 0.4, 1e-3, 2e7);
+}
+
+/// Runs Terzaghi's column with `elements` elements over the height: q = 10 kPa on a drained
+/// top (p_L = 0, the natural condition), impermeable fixed base, rollers with impermeable
+/// sides, no gravity (the excess pressure alone). Returns the largest |p - p_exact| / p0 over
+/// the points at each T of `times`; checks the early state on the way.
+std::vector<Real> terzaghiErrors(int elements, const std::vector<Real>& times) {
+  test::Column column(elements, 0.1, 1.0, consolidationClay());
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::traction("load", "top", 0.0, -1e4));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  // Local damping takes out the stress waves of the sudden load (Terzaghi's solution is
+  // quasi-static); it acts on unbalanced forces only and leaves the consolidation alone.
+  solver.beginStage(makeStage("consolidate", SolverKind::QuasiStatic, 0.0, 0.5, boundaries));
+  const Real p0 = 1e4 / 1.2;
+  const Real cv = 1e-3 / (1000 * 9.81 * 1.2e-7);
+  const auto y0 = hostCopy(column.points.initial_position);
+  std::vector<Real> errors;
+  for (const Real time_factor : times) {
+    runUntil(solver, time_factor / cv);
+    const auto pressure = hostCopy(column.points.pressure_liquid);
+    Real worst = 0;
+    for (int p = 0; p < column.points.count; ++p) {
+      const Real exact = terzaghi(p0, 1.0 - y0(p, 1), 1.0, time_factor);
+      worst = std::max(worst, std::fabs(pressure(p) - exact));
+      // Early, the base still carries the undrained p0 (Skempton/Terzaghi B).
+      if (time_factor <= 0.05 && y0(p, 1) < 0.1) {
+        EXPECT_NEAR(pressure(p), p0, 0.03 * p0) << "T = " << time_factor;
+      }
+    }
+    errors.push_back(worst / p0);
+    std::printf("[ terzaghi ] %d elements, T = %.2f: largest |p - p_exact| = %.3g p0\n", elements,
+                time_factor, worst / p0);
+  }
+  return errors;
+}
+
+TEST(Consolidation, TerzaghiColumnUnderTopLoad) {
+  const std::vector<Real> times{0.05, 0.1, 0.2, 0.5};
+  const auto coarse = terzaghiErrors(10, times);
+  EXPECT_LT(coarse[0], 0.08);  // T = 0.05: the damped load transient still shows
+  EXPECT_LT(coarse[1], 0.06);
+  EXPECT_LT(coarse[2], 0.04);
+  EXPECT_LT(coarse[3], 0.02);
+  // Twice the elements: the error falls (about first order, the drained-top points lag).
+  const auto fine = terzaghiErrors(20, {0.5});
+  EXPECT_LT(fine[0], 0.65 * coarse[3]);
+}
+
+TEST(Consolidation, DeformingClosedColumnKeepsItsLiquidMassToQuadrature) {
+  // Saturated column under gravity, every side impermeable (the top too): no liquid can
+  // leave. The undrained response puts p_L above hydrostatic (B rho_sat > rho_L), so liquid
+  // flows up inside the column while the skeleton settles. The point masses change only by
+  // the relative flux between points; its divergence is integrated by the points, which is
+  // exact at the seeded (symmetric) positions but not once the settling has moved them, so
+  // the total is kept to that quadrature error (~1e-7 relative here), not to round-off.
+  test::Column column(10, 0.1, 1.0, consolidationClay());
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::impermeable("top seal", "top"));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  solver.beginStage(makeStage("gravity", SolverKind::QuasiStatic, 9.81, 0.1, boundaries));
+  const auto m0 = hostCopy(column.points.mass_liquid);
+  Real initial = 0;
+  for (int p = 0; p < column.points.count; ++p) initial += m0(p);
+  // Hand value: n rho_L V over 1 m x 0.1 m = 0.4 * 1000 * 0.1 = 40 kg/m.
+  EXPECT_NEAR(initial, 40.0, 1e-12);
+  Real worst = 0;
+  runUntil(solver, 0.2,
+           [&] { worst = std::max(worst, std::fabs(solver.diagnostics().liquid_mass - initial)); });
+  EXPECT_LT(worst, 1e-6 * initial);
+  std::printf("[ closed column ] largest liquid mass change %.3g kg/m (relative %.3g)\n", worst,
+              worst / initial);
+}
+
+TEST(Consolidation, FixedSkeletonDrainsMonotonically) {
+  // Fixed skeleton (seepage only), uniform p_L = 10 kPa, drained top, impermeable base and
+  // sides, no gravity; 5 elements of 0.2 m. Only the liquid moves, and the pressure must fall
+  // everywhere, never rise, towards 0. Storage is n / K_L alone, so Terzaghi's solution
+  // holds with c_v = k K_L / (n gamma_w) = 2.5e-4 * 2e7 / (0.4 * 9810) = 1.27421 m^2/s.
+  // Monotone decay needs the drag to dominate the liquid's inertia at the grid scale: the
+  // drag rate n g / k = 15696 1/s is 10 x the fastest liquid wave frequency 2 sqrt(K_L /
+  // rho_L) / h = 1414 1/s. (With less drag the liquid's inertia makes the decay ring, as the
+  // liquid momentum equation 4.36 says it should.)
+  MaterialSpec clay =
+      test::elasticMaterial("clay", PhaseModel::Saturated, 1e7, 0.0, 0.4, 2.5e-4, 2e7);
+  clay.initial.liquid_pressure = 1e4;
+  test::Column column(5, 0.2, 1.0, clay);
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  solver.beginStage(makeStage("drain", SolverKind::FixedSkeleton, 0.0, 0.0,
+                              test::columnBoundaries(),
+                              {CriterionKind::UnsaturatedLiquid, CriterionKind::Consolidation}));
+  const Real cv = 2.5e-4 * 2e7 / (0.4 * 9810);
+  const auto x0 = hostCopy(column.points.position);
+  // The mean pressure (the stored liquid) must fall at every step. Single points may rise
+  // by a hair while the sudden drop at the top spreads (the explicit remap carries it one
+  // element per step, faster than the physical liquid wave): bounded by 1e-3 p_i.
+  auto previous = hostCopy(column.points.pressure_liquid);
+  auto mean = [&](const auto& pressure) {
+    Real sum = 0;
+    for (int p = 0; p < column.points.count; ++p) sum += pressure(p);
+    return sum / column.points.count;
+  };
+  int mean_rises = 0;
+  Real largest_rise = 0;
+  runUntil(solver, 0.5 / cv, [&] {
+    const auto now = hostCopy(column.points.pressure_liquid);
+    if (mean(now) > mean(previous)) ++mean_rises;
+    for (int p = 0; p < column.points.count; ++p)
+      largest_rise = std::max(largest_rise, now(p) - previous(p));
+    previous = now;
+  });
+  EXPECT_EQ(mean_rises, 0);
+  EXPECT_LT(largest_rise, 1e-3 * 1e4);
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  const auto x = hostCopy(column.points.position);
+  const auto stress = hostCopy(column.points.stress_effective);
+  Real worst = 0;
+  for (int p = 0; p < column.points.count; ++p) {
+    worst = std::max(worst, std::fabs(pressure(p) - terzaghi(1e4, 1.0 - x0(p, 1), 1.0, 0.5)));
+    EXPECT_EQ(x(p, 1), x0(p, 1));  // the skeleton did not move
+    EXPECT_EQ(stress(p, YY), 0.0);
+  }
+  EXPECT_LT(worst, 0.04 * 1e4);
+  std::printf("[ fixed skeleton ] T = 0.5 after %ld steps: largest |p - p_exact| = %.3g p_i\n",
+              solver.diagnostics().step, worst / 1e4);
+}
+
+TEST(Consolidation, FixedSkeletonClosedColumnKeepsLiquidMassToRoundOff) {
+  // Closed column, fixed skeleton, gravity switched on from p_L = 0: the liquid settles into
+  // a hydrostatic state by flowing down. Nothing leaves, the points do not move, so the sum
+  // of the point flux divergences is exactly the (zero) boundary flux: the liquid mass is
+  // kept to round-off. Initial: n rho_L V = 0.4 * 1000 * 0.1 * 1.0 = 40 kg/m.
+  test::Column column(10, 0.1, 1.0, consolidationClay());
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::impermeable("top seal", "top"));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  solver.beginStage(makeStage("settle", SolverKind::FixedSkeleton, 9.81, 0.0, boundaries,
+                              {CriterionKind::UnsaturatedLiquid, CriterionKind::Consolidation}));
+  Real worst = 0;
+  runUntil(solver, 0.05,
+           [&] { worst = std::max(worst, std::fabs(solver.diagnostics().liquid_mass - 40.0)); });
+  EXPECT_LT(worst, 1e-12 * 40.0);
+  // And it did flow: the base pressure rose from 0 (towards rho_L g H = 9810 Pa).
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  EXPECT_GT(pressure(0), 1000.0);
+}
+
+TEST(Consolidation, DryMaterialCarriesNoLiquid) {
+  // A dry layer (upper 5 elements) on a saturated one, under gravity. Dry points never get
+  // liquid: pressure, liquid mass and liquid velocity stay zero, and the nodes touched only
+  // by dry points have no liquid mass. The top of the saturated layer meets no liquid
+  // equation above it, so it is a free-draining surface (p_L = 0, the natural condition):
+  // the layer's excess pressure from the dry fill's weight drains there and the liquid that
+  // leaves is gone (declare the fill unsaturated to keep it). Initial liquid mass
+  // n rho_L V = 0.4 * 1000 * 0.05 = 20 kg/m.
+  test::Column column(10, 0.1, 1.0, consolidationClay());
+  column.materials.push_back(test::elasticMaterial("fill", PhaseModel::Dry, 1e7, 0.0, 0.4));
+  auto material = hostCopy(column.points.material);
+  const auto y = hostCopy(column.points.position);
+  for (int p = 0; p < column.points.count; ++p) material(p) = y(p, 1) > 0.5 ? 1 : 0;
+  Kokkos::deep_copy(column.points.material, material);
+  initialisePointState(column.materials, column.points);
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  solver.beginStage(
+      makeStage("gravity", SolverKind::QuasiStatic, 9.81, 0.1, test::columnBoundaries()));
+  runUntil(solver, 0.05);
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  const auto mass = hostCopy(column.points.mass_liquid);
+  const auto vl = hostCopy(column.points.velocity_liquid);
+  for (int p = 0; p < column.points.count; ++p) {
+    if (material(p) != 1) continue;
+    EXPECT_EQ(pressure(p), 0.0);
+    EXPECT_EQ(mass(p), 0.0);
+    EXPECT_EQ(vl(p, 1), 0.0);
+  }
+  EXPECT_GT(solver.diagnostics().liquid_mass, 19.9);
+  EXPECT_LT(solver.diagnostics().liquid_mass, 20.0);
+  // Nodes 14..21 (rows y >= 0.7) see only dry points.
+  const auto liquid_i = hostCopy(solver.grid().mass_liquid_intrinsic_i);
+  for (int i = 14; i < column.mesh.numNodes(); ++i) EXPECT_EQ(liquid_i(i), 0.0) << "node " << i;
+  // Row y = 0.5 (nodes 10, 11) is shared: it has liquid from the saturated points below.
+  EXPECT_GT(liquid_i(10), 0.0);
+}
+
+TEST(Consolidation, PrescribedPressureOnTopSubmergesTheColumn) {
+  // p^ = 10 kPa of water on the top (LiquidPressureBoundary: -p^ n on liquid AND mixture),
+  // no gravity, impermeable base and sides, k = 1e-2 m/s. The water load first compresses
+  // the column undrained (p_L = B p^ = 8333 Pa, sigma'_yy = -1667 Pa), then water flows in
+  // through the top until p_L = p^ everywhere and the skeleton is unloaded again
+  // (total stress -p^ = sigma' - p_L  ->  sigma' = 0). c_v = k / (gamma_w (m_v + n/K_L)) =
+  // 1e-2 / (9810 * 1.2e-7) = 8.49 m^2/s: T = 2 at t = 0.24 s.
+  MaterialSpec sand =
+      test::elasticMaterial("sand", PhaseModel::Saturated, 1e7, 0.0, 0.4, 1e-2, 2e7);
+  test::Column column(5, 0.2, 1.0, sand);
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::liquidPressure("water", "top", 1e4));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  solver.beginStage(makeStage("flood", SolverKind::QuasiStatic, 0.0, 0.5, boundaries));
+  runUntil(solver, 0.24);
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  const auto stress = hostCopy(column.points.stress_effective);
+  for (int p = 0; p < column.points.count; ++p) {
+    EXPECT_NEAR(pressure(p), 1e4, 0.02 * 1e4);
+    EXPECT_NEAR(stress(p, YY), 0.0, 0.02 * 1e4);
+  }
+  // Water came in through the top: with the skeleton back at its volume, the stored liquid
+  // is denser by rho_L0 p / K_L = 0.5 kg/m^3 over the pore volume n V = 0.4 * 0.2 m^2/m:
+  // +0.04 kg/m on the initial 0.4 * 1000 * 0.2 = 80 kg/m (within the 2 % of p above).
+  EXPECT_NEAR(solver.diagnostics().liquid_mass - 80.0, 0.04, 0.1 * 0.04);
+}
+
+}  // namespace
+}  // namespace argine
