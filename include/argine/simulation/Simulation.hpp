@@ -1,0 +1,74 @@
+#pragma once
+/// @file Simulation.hpp
+/// A run: the mesh, the material points and the output writers, and the loop over the
+/// deck's stages. Each stage hands the points to its solver; the loop itself is the
+/// ExaMPM five lines: choose dt, step, advance time, write when due, report progress.
+
+#include <memory>
+#include <string>
+
+#include "argine/input/Deck.hpp"
+#include "argine/mesh/Mesh.hpp"
+#include "argine/points/MaterialPoints.hpp"
+
+namespace argine {
+
+class ExplicitTwoPhaseSolver;
+class ResultsWriter;
+class CsvWriter;
+class ProgressReporter;
+
+/// Options of `argine run` that are not part of the deck.
+struct RunOptions {
+  std::string output_directory = "results";  ///< where the Exodus and CSV files go
+  bool quiet = false;                        ///< no progress output
+};
+
+/// What a finished run measured.
+struct RunSummary {
+  long long steps = 0;          ///< time steps taken over all stages
+  long long point_updates = 0;  ///< sum over steps of the number of material points
+  double wall_seconds = 0;      ///< wall time of the stage loop (s)
+  Real end_time = 0;            ///< simulated time at the end (s)
+  int output_steps = 0;         ///< time steps written to the Exodus files
+};
+
+class Simulation {
+ public:
+  /// Loads the mesh, checks the deck against it and against what the solvers support, and
+  /// seeds and initialises the material points. Throws InputError; writes nothing.
+  Simulation(const Deck& deck, const RunOptions& options);
+  ~Simulation();
+
+  /// Runs every stage in order, writing results at each stage's output interval and at the
+  /// end of each stage. Throws RunError when the run goes unstable (files keep the last
+  /// good output).
+  RunSummary run();
+
+  const Mesh& mesh() const { return mesh_; }
+  const MaterialPoints& points() const { return points_; }
+  /// Path of the grid results file (valid after run() started).
+  std::string gridPath() const;
+  /// Path of the current points results file (valid after run() started).
+  std::string pointsPath() const;
+
+ private:
+  void runStage(const StageSpec& stage);
+  void writeOutput();
+  void writeDiagnostics();
+
+  Deck deck_;
+  RunOptions options_;
+  Mesh mesh_;
+  MaterialPoints points_;
+  std::unique_ptr<ExplicitTwoPhaseSolver> solver_;
+  std::unique_ptr<ResultsWriter> results_;
+  std::unique_ptr<CsvWriter> diagnostics_;
+  std::unique_ptr<ProgressReporter> progress_;
+  RunSummary summary_;
+};
+
+/// Throws InputError for stages asking for a solver this build cannot run yet.
+void checkStagesSupported(const Deck& deck);
+
+}  // namespace argine

@@ -1,0 +1,134 @@
+#include "argine/simulation/Simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "argine/core/Error.hpp"
+#include "argine/output/CsvWriter.hpp"
+#include "argine/output/ProgressReporter.hpp"
+#include "argine/output/ResultsWriter.hpp"
+#include "argine/physics/ExplicitTwoPhaseSolver.hpp"
+#include "argine/physics/PointInitialisation.hpp"
+#include "argine/simulation/Setup.hpp"
+#include "argine/timestep/Criteria.hpp"
+
+namespace argine {
+
+namespace {
+
+std::vector<std::string> materialNames(const Deck& deck) {
+  std::vector<std::string> names;
+  for (const auto& material : deck.materials) names.push_back(material.name);
+  return names;
+}
+
+std::vector<NodalField> toOutputFields(const std::vector<NamedNodalField>& fields) {
+  std::vector<NodalField> output;
+  for (const auto& field : fields) output.push_back(NodalField{field.name, field.values});
+  return output;
+}
+
+double wallSeconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+void checkStagesSupported(const Deck& deck) {
+  for (const auto& stage : deck.stages) {
+    if (stage.solver == SolverKind::ImplicitSeepage)
+      throw InputError("Stages/" + stage.name + "/Solver",
+                       "'implicit seepage' is not available in this version; use 'explicit', "
+                       "'fixed skeleton' or 'quasi-static'");
+  }
+}
+
+Simulation::Simulation(const Deck& deck, const RunOptions& options)
+    : deck_(deck), options_(options) {
+  checkStagesSupported(deck_);
+  checkMaterialsForExplicitSolver(deck_.materials);
+  mesh_ = loadMesh(deck_);
+  points_ = seedPoints(deck_, mesh_);
+  initialisePointState(deck_.materials, points_);
+  solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
+}
+
+Simulation::~Simulation() = default;
+
+std::string Simulation::gridPath() const { return results_ ? results_->gridPath() : ""; }
+std::string Simulation::pointsPath() const { return results_ ? results_->pointsPath() : ""; }
+
+RunSummary Simulation::run() {
+  ProgressOptions progress_options;
+  progress_options.quiet = options_.quiet;
+  progress_ = std::make_unique<ProgressReporter>(ProgressReporter::forStandardOutput(progress_options));
+
+  std::vector<std::string> nodal_names;
+  for (const auto& field : solver_->nodalFields()) nodal_names.push_back(field.name);
+  results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
+                                             materialNames(deck_), nodal_names, points_);
+  diagnostics_ = std::make_unique<CsvWriter>(
+      options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv",
+      std::vector<std::string>{"time", "time_step", "kinetic_energy_solid",
+                               "kinetic_energy_liquid", "liquid_mass", "lost_points"});
+  writeOutput();
+
+  const double wall_start = wallSeconds();
+  for (const auto& stage : deck_.stages) runStage(stage);
+  summary_.wall_seconds = wallSeconds() - wall_start;
+  summary_.end_time = solver_->time();
+  summary_.output_steps = results_->steps();
+
+  if (!options_.quiet) {
+    const double rate = summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
+    std::printf("argine: %lld steps, %d points, %.3g s simulated in %.2f s wall: %.3g point-updates/s\n",
+                summary_.steps, points_.count, summary_.end_time, summary_.wall_seconds, rate);
+    std::printf("argine: results in %s and %s\n", results_->gridPath().c_str(),
+                results_->pointsPath().c_str());
+  }
+  return summary_;
+}
+
+void Simulation::runStage(const StageSpec& stage) {
+  solver_->beginStage(stage);
+  const Real start = solver_->time();
+  const Real end = start + stage.duration;
+  // Output times are start + k * interval; the step is shortened to land on them exactly.
+  const Real interval = stage.output_interval > 0 ? stage.output_interval : stage.duration;
+  Real next_output = start + interval;
+  // Times within this tolerance of a target count as reaching it (round-off of sums of dt).
+  const Real tolerance = 1e-9 * std::max<Real>(stage.duration, 1e-30);
+
+  progress_->beginStage(stage.name, start, stage.duration);
+  Real dt = 0;
+  while (solver_->time() < end - tolerance) {
+    dt = solver_->chooseTimeStep().time_step;
+    dt = std::min(dt, std::min(next_output, end) - solver_->time());
+    solver_->step(dt);
+    ++summary_.steps;
+    summary_.point_updates += points_.count;
+    if (solver_->time() >= next_output - tolerance) {
+      writeOutput();
+      next_output = std::min(end, next_output + interval);
+      if (next_output <= solver_->time() + tolerance) next_output = end;
+    }
+    progress_->update(summary_.steps, solver_->time(), dt, points_.count);
+  }
+  progress_->endStage(summary_.steps, solver_->time(), dt);
+}
+
+void Simulation::writeOutput() {
+  results_->write(solver_->time(), points_, toOutputFields(solver_->nodalFields()));
+  writeDiagnostics();
+}
+
+void Simulation::writeDiagnostics() {
+  const auto& d = solver_->diagnostics();
+  diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
+                          d.kinetic_energy_liquid, d.liquid_mass,
+                          static_cast<Real>(d.lost_points)});
+}
+
+}  // namespace argine
