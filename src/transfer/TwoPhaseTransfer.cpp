@@ -243,24 +243,26 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         Real divergence = 0, relative_divergence = 0, content = 0;
         Real w[kDim] = {0, 0}, gradient[kDim] = {0, 0};
         if (liquid_m(material_p(p)) != 0) {
+          // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
+          // at the element centre (N = 1/kNodes), not at the point: per-point values differ
+          // between rows of points in one element, a pressure mode the momentum equations
+          // cannot see (a one-element-wide quad4 column shows it), which then grows.
+          constexpr Real centre = Real(1) / kNodes;
           for (int a = 0; a < kNodes; ++a) {
             const int i = node_p(p, a);
-            const Real N = value_p(p, a);
             const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
             const Real vlx = velocity_liquid_i(i, 0), vly = velocity_liquid_i(i, 1);
             const Real wx = vlx - velocity_solid_i(i, 0), wy = vly - velocity_solid_i(i, 1);
             divergence += vlx * dx + vly * dy;
             relative_divergence += wx * dx + wy * dy;
-            w[0] += N * wx;
-            w[1] += N * wy;
-            content += N * liquid_content_i(i);
+            w[0] += centre * wx;
+            w[1] += centre * wy;
+            content += centre * liquid_content_i(i);
             gradient[0] += liquid_content_i(i) * dx;
             gradient[1] += liquid_content_i(i) * dy;
           }
         }
         divergence_p(p) = dt * divergence;
-        // div(c w) of the interpolated fields: its point sum is the boundary flux up to the
-        // quadrature error of the points, so a closed domain keeps its liquid mass.
         flux_divergence_p(p) =
             dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]);
       });
