@@ -80,6 +80,7 @@ int runCommand(const std::string& command, const Arguments& arguments) {
   }
   if (command == "check") {
     const argine::Deck deck = argine::readDeck(deckArgument(arguments, "check"));
+    argine::checkDeckSupported(deck);
     const argine::Mesh mesh = argine::loadMesh(deck);
     std::printf("%s: valid (%zu materials, %zu stages; mesh %d nodes, %d %s elements)\n",
                 deck.path.c_str(), deck.materials.size(), deck.stages.size(), mesh.numNodes(),

@@ -170,7 +170,7 @@ ListSchema conductivityKeys() {
                                  "k_sat; kappa = k_sat mu_L / (rho_L g) with g = 9.81 m/s2")
                        .above(0));
   conductivity.exactlyOneOf({"Intrinsic Permeability (m2)", "Saturated Conductivity (m/s)"});
-  conductivity.add(KeySpec::real("Exponent", "-", "r in k = k_sat S_e^r (Hillel, Eq. 4.30)")
+  conductivity.add(KeySpec::real("Exponent", "-", "r in k = k_sat S_L^r (Hillel, Eq. 4.30)")
                        .above(0)
                        .when("Model", {"Hillel"})
                        .byDefault(3.0));

@@ -5,6 +5,8 @@
 #include <cstdio>
 
 #include "argine/core/Error.hpp"
+#include "argine/input/DeckWords.hpp"
+#include "argine/materials/SolidModel.hpp"
 #include "argine/output/CsvWriter.hpp"
 #include "argine/output/ProgressReporter.hpp"
 #include "argine/output/ResultsWriter.hpp"
@@ -36,7 +38,13 @@ double wallSeconds() {
 
 }  // namespace
 
-void checkStagesSupported(const Deck& deck) {
+void checkDeckSupported(const Deck& deck) {
+  for (const auto& material : deck.materials) {
+    if (!isImplemented(material.solid.model))
+      throw InputError("Materials/" + material.name + "/Solid/Model",
+                       std::string("'") + deckWord(kSolidModelWords, material.solid.model) +
+                           "' has no stress update in this version; use 'linear elastic'");
+  }
   for (const auto& stage : deck.stages) {
     if (stage.solver == SolverKind::ImplicitSeepage)
       throw InputError("Stages/" + stage.name + "/Solver",
@@ -47,7 +55,7 @@ void checkStagesSupported(const Deck& deck) {
 
 Simulation::Simulation(const Deck& deck, const RunOptions& options)
     : deck_(deck), options_(options) {
-  checkStagesSupported(deck_);
+  checkDeckSupported(deck_);
   checkMaterialsForExplicitSolver(deck_.materials);
   mesh_ = loadMesh(deck_);
   points_ = seedPoints(deck_, mesh_);
@@ -103,8 +111,12 @@ void Simulation::runStage(const StageSpec& stage) {
 
   progress_->beginStage(stage.name, start, stage.duration);
   Real dt = 0;
+  bool first_step = true;
   while (solver_->time() < end - tolerance) {
-    dt = solver_->chooseTimeStep().time_step;
+    const TimeStepChoice& choice = solver_->chooseTimeStep();
+    if (first_step && !options_.quiet) logTimeStep(stage, choice);
+    first_step = false;
+    dt = choice.time_step;
     dt = std::min(dt, std::min(next_output, end) - solver_->time());
     solver_->step(dt);
     ++summary_.steps;
@@ -117,6 +129,22 @@ void Simulation::runStage(const StageSpec& stage) {
     progress_->update(summary_.steps, solver_->time(), dt, points_.count);
   }
   progress_->endStage(summary_.steps, solver_->time(), dt);
+}
+
+void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const {
+  std::printf("argine: stage '%s' (%s): dt = %.4g s", stage.name.c_str(),
+              deckWord(kSolverWords, stage.solver), choice.time_step);
+  if (choice.automatic)
+    std::printf(" = %.3g x %.4g s, governed by '%s' at point %d (%.4g, %.4g) m\n",
+                stage.time_step.safety_factor, choice.critical_step, criterionName(choice.governing),
+                choice.point_id, choice.position[0], choice.position[1]);
+  else
+    std::printf(" (fixed)\n");
+  std::printf("argine: stage '%s': duration %.4g s, gravity %.4g m/s2, local damping %.3g, "
+              "mass scaling %.4g\n",
+              stage.name.c_str(), stage.duration, stage.gravity, stage.local_damping,
+              stage.mass_scaling);
+  std::fflush(stdout);
 }
 
 void Simulation::writeOutput() {

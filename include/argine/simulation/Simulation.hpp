@@ -14,6 +14,7 @@
 namespace argine {
 
 class ExplicitTwoPhaseSolver;
+struct TimeStepChoice;
 class ResultsWriter;
 class CsvWriter;
 class ProgressReporter;
@@ -54,6 +55,7 @@ class Simulation {
 
  private:
   void runStage(const StageSpec& stage);
+  void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   void writeOutput();
   void writeDiagnostics();
 
@@ -68,7 +70,9 @@ class Simulation {
   RunSummary summary_;
 };
 
-/// Throws InputError for stages asking for a solver this build cannot run yet.
-void checkStagesSupported(const Deck& deck);
+/// Throws InputError for anything the deck asks for that this build cannot run yet: a
+/// solid model without a stress update, a stage solver not implemented. `argine check`
+/// calls it too, so such a deck is rejected before a run, never half-way through.
+void checkDeckSupported(const Deck& deck);
 
 }  // namespace argine
