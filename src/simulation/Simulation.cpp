@@ -65,13 +65,18 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
 
 Simulation::~Simulation() = default;
 
-std::string Simulation::gridPath() const { return results_ ? results_->gridPath() : ""; }
-std::string Simulation::pointsPath() const { return results_ ? results_->pointsPath() : ""; }
+std::string Simulation::gridPath() const {
+  return results_ ? results_->gridPath() : "";
+}
+std::string Simulation::pointsPath() const {
+  return results_ ? results_->pointsPath() : "";
+}
 
 RunSummary Simulation::run() {
   ProgressOptions progress_options;
   progress_options.quiet = options_.quiet;
-  progress_ = std::make_unique<ProgressReporter>(ProgressReporter::forStandardOutput(progress_options));
+  progress_ =
+      std::make_unique<ProgressReporter>(ProgressReporter::forStandardOutput(progress_options));
 
   std::vector<std::string> nodal_names;
   for (const auto& field : solver_->nodalFields()) nodal_names.push_back(field.name);
@@ -79,8 +84,8 @@ RunSummary Simulation::run() {
                                              materialNames(deck_), nodal_names, points_);
   diagnostics_ = std::make_unique<CsvWriter>(
       options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv",
-      std::vector<std::string>{"time", "time_step", "kinetic_energy_solid",
-                               "kinetic_energy_liquid", "liquid_mass", "lost_points"});
+      std::vector<std::string>{"time", "time_step", "kinetic_energy_solid", "kinetic_energy_liquid",
+                               "liquid_mass", "lost_points"});
   writeOutput();
 
   const double wall_start = wallSeconds();
@@ -90,9 +95,11 @@ RunSummary Simulation::run() {
   summary_.output_steps = results_->steps();
 
   if (!options_.quiet) {
-    const double rate = summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
-    std::printf("argine: %lld steps, %d points, %.3g s simulated in %.2f s wall: %.3g point-updates/s\n",
-                summary_.steps, points_.count, summary_.end_time, summary_.wall_seconds, rate);
+    const double rate =
+        summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
+    std::printf(
+        "argine: %lld steps, %d points, %.3g s simulated in %.2f s wall: %.3g point-updates/s\n",
+        summary_.steps, points_.count, summary_.end_time, summary_.wall_seconds, rate);
     std::printf("argine: results in %s and %s\n", results_->gridPath().c_str(),
                 results_->pointsPath().c_str());
   }
@@ -136,14 +143,15 @@ void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choic
               deckWord(kSolverWords, stage.solver), choice.time_step);
   if (choice.automatic)
     std::printf(" = %.3g x %.4g s, governed by '%s' at point %d (%.4g, %.4g) m\n",
-                stage.time_step.safety_factor, choice.critical_step, criterionName(choice.governing),
-                choice.point_id, choice.position[0], choice.position[1]);
+                stage.time_step.safety_factor, choice.critical_step,
+                criterionName(choice.governing), choice.point_id, choice.position[0],
+                choice.position[1]);
   else
     std::printf(" (fixed)\n");
-  std::printf("argine: stage '%s': duration %.4g s, gravity %.4g m/s2, local damping %.3g, "
-              "mass scaling %.4g\n",
-              stage.name.c_str(), stage.duration, stage.gravity, stage.local_damping,
-              stage.mass_scaling);
+  std::printf(
+      "argine: stage '%s': duration %.4g s, gravity %.4g m/s2, local damping %.3g, "
+      "mass scaling %.4g\n",
+      stage.name.c_str(), stage.duration, stage.gravity, stage.local_damping, stage.mass_scaling);
   std::fflush(stdout);
 }
 
