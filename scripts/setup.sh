@@ -9,7 +9,7 @@ packages=(
   trilinos-all-dev libptscotch-dev
   libexodusii-dev libnetcdf-dev
   libeigen3-dev libgtest-dev
-  python3 python3-matplotlib
+  python3 python3-matplotlib python3-scipy
 )
 packages+=("$@")   # callers may ask for more (e.g. the ParaView check)
 
