@@ -4,13 +4,12 @@
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/AffineElementMaps.hpp"
 
 namespace argine {
 
 void PointShapes::allocate(int n) {
-  node_p = View<int* [kMaxElementNodes]>("shape_node_p", n);
-  value_p = View<Real* [kMaxElementNodes]>("shape_value_p", n);
-  gradient_p = View<Real* [kMaxElementNodes][kDim]>("shape_gradient_p", n);
+  shape_p = View<PointShape*>("shape_p", n);
 }
 
 namespace {
@@ -22,19 +21,18 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
   const auto connectivity = mesh.connectivity;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const auto node_p = shapes.node_p;
-  const auto value_p = shapes.value_p;
-  const auto gradient_p = shapes.gradient_p;
+  const auto shape_p = shapes.shape_p;
   Kokkos::parallel_for(
       "evaluate_point_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
+        PointShape& shape = shape_p(p);
         const int e = element_p(p);
         if (e < 0) {
           for (int a = 0; a < kMaxElementNodes; ++a) {
-            node_p(p, a) = -1;
-            value_p(p, a) = 0;
-            gradient_p(p, a, 0) = 0;
-            gradient_p(p, a, 1) = 0;
+            shape.node[a] = -1;
+            shape.value[a] = 0;
+            shape.gradient[a][0] = 0;
+            shape.gradient[a][1] = 0;
           }
           return;
         }
@@ -46,10 +44,10 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
         Shape::values(xi, N);
         physicalGradients<Shape>(X, xi, dNdx);
         for (int a = 0; a < kNodes; ++a) {
-          node_p(p, a) = connectivity(e, a);
-          value_p(p, a) = N[a];
-          gradient_p(p, a, 0) = dNdx[a][0];
-          gradient_p(p, a, 1) = dNdx[a][1];
+          shape.node[a] = connectivity(e, a);
+          shape.value[a] = N[a];
+          shape.gradient[a][0] = dNdx[a][0];
+          shape.gradient[a][1] = dNdx[a][1];
         }
       });
 }
@@ -84,75 +82,113 @@ KOKKOS_INLINE_FUNCTION bool localCoordinates(const Real X[][kDim], const Real x[
 }
 
 template <class Shape>
-int relocate(const Mesh& mesh, const PointLocator& locator, MaterialPoints& points,
-             PointShapes& shapes) {
+RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
+                          const AffineElementMaps& maps, MaterialPoints& points,
+                          PointShapes& shapes) {
   constexpr int kNodes = Shape::kNodes;
   const auto coordinates = mesh.coordinates;
   const auto connectivity = mesh.connectivity;
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto position_p = points.position;
-  const auto node_p = shapes.node_p;
-  const auto value_p = shapes.value_p;
-  const auto gradient_p = shapes.gradient_p;
-  int lost = 0;
+  const auto shape_p = shapes.shape_p;
+  const auto inverse_e = maps.inverse_jacobian_e;
+  const auto origin_e = maps.origin_e;
+  const auto affine_e = maps.affine_e;
+  const bool with_maps = maps.count() == mesh.numElements() && mesh.numElements() > 0;
+  RelocationCounts counts;
   Kokkos::parallel_reduce(
       "relocate_and_evaluate_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p, int& outside) {
+      KOKKOS_LAMBDA(const int p, int& outside, int& moved) {
+        PointShape& shape = shape_p(p);
         const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
+        // xi = J^-1 (x - x_0) in an affine element, whichever path found the element, so
+        // relocating a point twice from one position gives the same shapes bit for bit.
+        auto affineLocal = [&](const int element, Real local[kDim]) {
+          const Real y0 = x[0] - origin_e(element, 0), y1 = x[1] - origin_e(element, 1);
+          local[0] = inverse_e(element, 0) * y0 + inverse_e(element, 1) * y1;
+          local[1] = inverse_e(element, 2) * y0 + inverse_e(element, 3) * y1;
+        };
         int e = element_p(p);
         Real X[kNodes][kDim];
+        bool gathered = false;  // X holds the nodes of element e
         Real xi[kDim] = {local_p(p, 0), local_p(p, 1)};
         bool found = false;
         if (e >= 0) {  // fast path: still strictly inside the same element
-          gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
           Real trial[kDim];
-          if (localCoordinates<Shape>(X, x, trial) && Shape::margin(trial) >= locator.tolerance()) {
+          bool mapped;
+          if (with_maps && affine_e(e)) {
+            affineLocal(e, trial);
+            mapped = true;
+          } else {
+            gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+            gathered = true;
+            mapped = localCoordinates<Shape>(X, x, trial);
+          }
+          if (mapped && Shape::margin(trial) >= locator.tolerance()) {
             xi[0] = trial[0];
             xi[1] = trial[1];
             found = true;
           }
         }
         if (!found) {
+          const int old = e;
           e = locator.locate(x, xi, e);
           element_p(p) = e;
+          if (e != old) ++moved;
+          gathered = false;
           if (e < 0) {
             ++outside;
             for (int a = 0; a < kMaxElementNodes; ++a) {
-              node_p(p, a) = -1;
-              value_p(p, a) = 0;
-              gradient_p(p, a, 0) = gradient_p(p, a, 1) = 0;
+              shape.node[a] = -1;
+              shape.value[a] = 0;
+              shape.gradient[a][0] = shape.gradient[a][1] = 0;
             }
             return;
           }
-          gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+          if (with_maps && affine_e(e)) affineLocal(e, xi);
         }
         local_p(p, 0) = xi[0];
         local_p(p, 1) = xi[1];
         Real N[kNodes];
         Real dNdx[kNodes][kDim];
         Shape::values(xi, N);
-        physicalGradients<Shape>(X, xi, dNdx);
+        if (with_maps && affine_e(e)) {  // dN/dx = dN/dxi J^-1, J constant
+          Real dN[kNodes][kDim];
+          Shape::localGradients(xi, dN);
+          for (int a = 0; a < kNodes; ++a)
+            for (int i = 0; i < kDim; ++i)
+              dNdx[a][i] = dN[a][0] * inverse_e(e, i) + dN[a][1] * inverse_e(e, 2 + i);
+        } else {
+          if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+          physicalGradients<Shape>(X, xi, dNdx);
+        }
         for (int a = 0; a < kNodes; ++a) {
-          node_p(p, a) = connectivity(e, a);
-          value_p(p, a) = N[a];
-          gradient_p(p, a, 0) = dNdx[a][0];
-          gradient_p(p, a, 1) = dNdx[a][1];
+          shape.node[a] = connectivity(e, a);
+          shape.value[a] = N[a];
+          shape.gradient[a][0] = dNdx[a][0];
+          shape.gradient[a][1] = dNdx[a][1];
         }
       },
-      lost);
-  return lost;
+      counts.lost, counts.changed_element);
+  return counts;
 }
 
 }  // namespace
 
-int relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator, MaterialPoints& points,
-                              PointShapes& shapes) {
+RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator,
+                                           const AffineElementMaps& maps, MaterialPoints& points,
+                                           PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
   return withShape(mesh.type, [&](auto shape) {
-    return relocate<decltype(shape)>(mesh, locator, points, shapes);
+    return relocate<decltype(shape)>(mesh, locator, maps, points, shapes);
   });
+}
+
+int relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator, MaterialPoints& points,
+                              PointShapes& shapes) {
+  return relocateAndEvaluateShapes(mesh, locator, AffineElementMaps{}, points, shapes).lost;
 }
 
 void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {

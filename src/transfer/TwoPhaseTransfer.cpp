@@ -26,9 +26,7 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
 template <int kNodes>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity, GridFields& grid) {
-  const auto node_p = shapes.node_p;
-  const auto value_p = shapes.value_p;
-  const auto gradient_p = shapes.gradient_p;
+  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
   const auto mass_solid_p = points.mass_solid;
@@ -54,7 +52,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
 
   Kokkos::parallel_for(
       "p2g_two_phase", Kokkos::RangePolicy<ExecSpace>(0, points.count), KOKKOS_LAMBDA(const int p) {
-        if (node_p(p, 0) < 0) return;
+        const PointShape& shape = shape_p(p);
+        if (shape.node[0] < 0) return;
         auto mass_solid_i = mass_solid_sv.access();
         auto momentum_solid_i = momentum_solid_sv.access();
         auto force_mixture_i = force_mixture_sv.access();
@@ -72,9 +71,9 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
         const Real vsx = velocity_solid_p(p, 0), vsy = velocity_solid_p(p, 1);
 
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
-          const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
+          const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
           mass_solid_i(i) += N * m_solid;
           momentum_solid_i(i, 0) += N * m_solid * vsx;
           momentum_solid_i(i, 1) += N * m_solid * vsy;
@@ -98,8 +97,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
         const Real weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
         const Real vlx = velocity_liquid_p(p, 0), vly = velocity_liquid_p(p, 1);
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
           mass_liquid_i(i) += N * m_liquid;
           mass_intrinsic_i(i) += N * m_intrinsic;
           drag_i(i) += N * drag;
@@ -107,8 +106,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
           momentum_liquid_i(i, 0) += N * m_intrinsic * vlx;
           momentum_liquid_i(i, 1) += N * m_intrinsic * vly;
           // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
-          force_liquid_i(i, 0) += gradient_p(p, a, 0) * pressure_volume;
-          force_liquid_i(i, 1) += gradient_p(p, a, 1) * pressure_volume + N * weight_liquid;
+          force_liquid_i(i, 0) += shape.gradient[a][0] * pressure_volume;
+          force_liquid_i(i, 1) += shape.gradient[a][1] * pressure_volume + N * weight_liquid;
         }
       });
 
@@ -127,8 +126,7 @@ template <int kNodes>
 KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const LiquidCarrying& liquid_m, Real dt,
                                                 MaterialPoints& points, GridFields& grid) {
-  const auto node_p = shapes.node_p;
-  const auto value_p = shapes.value_p;
+  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
   const auto mass_solid_p = points.mass_solid;
@@ -145,12 +143,13 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   Kokkos::parallel_reduce(
       "g2p_velocities_p2g_momenta", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, Real& ks, Real& kl, int& bad) {
-        if (node_p(p, 0) < 0) return;
+        const PointShape& shape = shape_p(p);
+        if (shape.node[0] < 0) return;
         const bool wet = liquid_m(material_p(p)) != 0;
         Real as[kDim] = {0, 0}, al[kDim] = {0, 0};
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
           as[0] += N * acceleration_solid_i(i, 0);
           as[1] += N * acceleration_solid_i(i, 1);
           if (wet) {
@@ -167,8 +166,8 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         if (!(Kokkos::Experimental::isfinite(vsx) && Kokkos::Experimental::isfinite(vsy))) ++bad;
         auto momentum_solid_i = momentum_solid_sv.access();
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
           momentum_solid_i(i, 0) += N * ms * vsx;
           momentum_solid_i(i, 1) += N * ms * vsy;
         }
@@ -182,8 +181,8 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         auto momentum_liquid_i = momentum_liquid_sv.access();
         const Real ml = density_liquid_p(p) * volume_p(p);
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
           momentum_liquid_i(i, 0) += N * ml * vlx;
           momentum_liquid_i(i, 1) += N * ml * vly;
         }
@@ -198,9 +197,7 @@ template <int kNodes>
 void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                                       const LiquidCarrying& liquid_m, const GridFields& grid,
                                       Real dt, PointRates& rates) {
-  const auto node_p = shapes.node_p;
-  const auto value_p = shapes.value_p;
-  const auto gradient_p = shapes.gradient_p;
+  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto velocity_solid_i = grid.velocity_solid_i;
   const auto velocity_liquid_i = grid.velocity_liquid_i;
@@ -212,7 +209,8 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   Kokkos::parallel_for(
       "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        if (node_p(p, 0) < 0) {
+        const PointShape& shape = shape_p(p);
+        if (shape.node[0] < 0) {
           for (int c = 0; c < kStressComponents; ++c) strain_increment_p(p, c) = 0;
           displacement_increment_p(p, 0) = displacement_increment_p(p, 1) = 0;
           divergence_p(p) = 0;
@@ -222,9 +220,9 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         Real L[kDim][kDim] = {{0, 0}, {0, 0}};  // L_jk = d v_S,j / d x_k
         Real v[kDim] = {0, 0};
         for (int a = 0; a < kNodes; ++a) {
-          const int i = node_p(p, a);
-          const Real N = value_p(p, a);
-          const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
+          const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
           const Real vx = velocity_solid_i(i, 0), vy = velocity_solid_i(i, 1);
           L[0][0] += vx * dx;
           L[0][1] += vx * dy;
@@ -249,8 +247,8 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
           // cannot see (a one-element-wide quad4 column shows it), which then grows.
           constexpr Real centre = Real(1) / kNodes;
           for (int a = 0; a < kNodes; ++a) {
-            const int i = node_p(p, a);
-            const Real dx = gradient_p(p, a, 0), dy = gradient_p(p, a, 1);
+            const int i = shape.node[a];
+            const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
             const Real vlx = velocity_liquid_i(i, 0), vly = velocity_liquid_i(i, 1);
             const Real wx = vlx - velocity_solid_i(i, 0), wy = vly - velocity_solid_i(i, 1);
             divergence += vlx * dx + vly * dy;
