@@ -12,6 +12,7 @@
 #include "argine/physics/PointUpdates.hpp"
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/points/Seeding.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
 
 namespace argine {
@@ -22,6 +23,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
       points_(points),
       table_(materials),
       locator_(mesh),
+      element_maps_(mesh),
       nodes_in_use_(mesh.numNodes()),
       nodes_next_(mesh.numNodes()),
       time_step_(mesh) {
@@ -51,7 +53,7 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
       KOKKOS_LAMBDA(const int p) {
         const PointMaterial& material = materials_m(pts.material(p));
         if (!carriesLiquid(material.phase)) return;
-        const LiquidState state = liquidState(material, pts.pressure_liquid(p));
+        const LiquidState state = saturationAndConductivity(material, pts.pressure_liquid(p));
         pts.saturation(p) = state.saturation;
         pts.conductivity(p) = state.conductivity;
       });
@@ -92,25 +94,37 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
 }
 
 const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
+  PhaseTimer timer(profile_, StepPhase::TimeStep);
   return time_step_.next(points_, table_);
 }
 
 void ExplicitTwoPhaseSolver::step(Real dt) {
   if (!stage_started_) throw std::logic_error("ExplicitTwoPhaseSolver::step before beginStage");
-  mapMassesMomentaAndForces();            // assembly at t^k (4.38-4.45), boundary loads
-  solveLiquidMomentum();                  // step 1 (4.36)
-  solveMixtureMomentum();                 // step 2 (4.37)
-  applyAccelerationBoundaryConditions();  // fixities, impermeable boundaries
-  updatePointVelocities(dt);              // step 3 (7.10, 7.11)
-  updateNodalVelocities();                // step 4
-  computeStrainIncrements(dt);            // step 4
+  auto timed = [this](StepPhase phase, auto&& run) {
+    PhaseTimer timer(profile_, phase);
+    run();
+  };
+  // assembly at t^k (4.38-4.45), boundary loads
+  timed(StepPhase::P2G, [&] { mapMassesMomentaAndForces(); });
+  timed(StepPhase::NodalSolve, [&] {
+    solveLiquidMomentum();                  // step 1 (4.36)
+    solveMixtureMomentum();                 // step 2 (4.37)
+    applyAccelerationBoundaryConditions();  // fixities, impermeable boundaries
+  });
+  timed(StepPhase::G2PVelocity, [&] { updatePointVelocities(dt); });  // step 3 (7.10, 7.11)
+  timed(StepPhase::NodalSolve, [&] { updateNodalVelocities(); });     // step 4
+  timed(StepPhase::G2PStrain, [&] { computeStrainIncrements(dt); });  // step 4
   // Steps 5-7 in one pass over the points, per point in this order: updatePorosityAndVolume
   // (4.9), updateLiquidPressure (4.12 / 4.14), updateEffectiveStress (4.22, 4.5),
   // updateLiquidState (SWRC, HCC), updatePointPosition (7.13); see PointUpdates.hpp.
-  updatePointStates();
-  relocatePoints();  // step 8
+  timed(StepPhase::Constitutive, [&] { updatePointStates(); });
+  timed(StepPhase::Relocation, [&] { relocatePoints(); });  // step 8
+  if (sort_interval_ > 0 && (diagnostics_.step + 1) % sort_interval_ == 0)
+    timed(StepPhase::Sort, [&] { sortPoints(); });
   time_ += dt;
-  checkStability(dt);
+  profile_.steps += 1;
+  profile_.point_updates += points_.count;
+  timed(StepPhase::Stability, [&] { checkStability(dt); });
 }
 
 // ------------------------------------------------------------------ the steps
@@ -119,7 +133,8 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   // The grid keeps the last step's fields for output until now: clear exactly those nodes,
   // then work on the nodes of the points' current elements.
   grid_.zero(nodes_in_use_);
-  std::swap(nodes_in_use_, nodes_next_);
+  if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
+  nodes_next_changed_ = false;
   mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_);
   boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
                              grid_.force_liquid_i);
@@ -159,8 +174,25 @@ void ExplicitTwoPhaseSolver::updatePointStates() {
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {
-  diagnostics_.lost_points = relocateAndEvaluateShapes(mesh_, locator_, points_, shapes_);
-  nodes_next_.rebuild(mesh_, points_);
+  const RelocationCounts counts =
+      relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  diagnostics_.lost_points = counts.lost;
+  // No point changed element (the common case): the active nodes stay nodes_in_use_.
+  if (counts.changed_element > 0) {
+    nodes_next_.rebuild(mesh_, points_);
+    nodes_next_changed_ = true;
+  }
+}
+
+void ExplicitTwoPhaseSolver::sortPoints() {
+  // After the relocation, by the elements of t^{k+1}. Relocating the sorted points again
+  // (one cheap pass every sortInterval() steps) gives each point exactly the element, local
+  // coordinates and shape functions it had (see relocateAndEvaluateShapes); the active
+  // nodes are the same set.
+  sortPointsByElement(points_);
+  relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  time_step_.pointsReordered(points_);
+  profile_.sorts += 1;
 }
 
 void ExplicitTwoPhaseSolver::checkStability(Real dt) {

@@ -1,6 +1,7 @@
 #include "argine/physics/MaterialTable.hpp"
 
 #include "argine/input/Deck.hpp"
+#include "argine/materials/LinearElastic.hpp"
 
 namespace argine {
 
@@ -20,6 +21,7 @@ MaterialTable::MaterialTable(const std::vector<MaterialSpec>& materials) {
     material.liquid = spec.liquid;
     material.retention = spec.retention;
     material.conductivity = spec.conductivity;
+    material.constrained_modulus = constrainedModulus(spec.solid);
     table(m) = material;
     liquid(m) = carriesLiquid(spec.phase) ? 1 : 0;
     host_.push_back(material);

@@ -5,7 +5,6 @@
 
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
-#include "argine/materials/LinearElastic.hpp"
 #include "argine/mesh/MeshGeometry.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -68,7 +67,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         in.porosity = pts.porosity(p);
         in.solid_density = material.solid_density;
         in.liquid_bulk_modulus = material.liquid.bulk_modulus;
-        in.constrained_modulus = constrainedModulus(material.solid);
+        in.constrained_modulus = material.constrained_modulus;  // precomputed: one division less
         in.mass_scaling = mass_scaling;
         if (!carriesLiquid(material.phase)) {
           const Real dt = criticalStepCflDry(in);
@@ -120,6 +119,20 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   choice.position[0] = position(0, 0);
   choice.position[1] = position(0, 1);
   return choice;
+}
+
+void TimeStepControl::pointsReordered(const MaterialPoints& points) {
+  if (choice_.point < 0) return;
+  const int id = choice_.point_id;
+  const auto id_p = points.id;
+  int index = -1;
+  Kokkos::parallel_reduce(
+      "find_point_by_id", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, int& found) {
+        if (id_p(p) == id && p > found) found = p;
+      },
+      Kokkos::Max<int>(index));
+  choice_.point = index;
 }
 
 const TimeStepChoice& TimeStepControl::next(const MaterialPoints& points,

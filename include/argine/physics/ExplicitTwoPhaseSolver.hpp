@@ -19,15 +19,20 @@
 ///     updateLiquidState         step 6: S_L (SWRC), k (HCC)
 ///     updatePointPosition       step 7: x += dt sum N v_S^{k+1} (7.13)
 ///   relocatePoints              step 8: grid discarded, points re-located for t^{k+1}
+///   sortPoints                  every sortInterval() steps (if set): points by element
 ///   checkStability              non-finite values or runaway kinetic energy -> RunError
 ///
 /// Cost: every loop runs over the points or over the ACTIVE nodes (nodes of elements that
 /// hold points); the background mesh is touched only by an O(nodes) byte scan that lists the
-/// active nodes once per step. Empty elements cost nothing else.
+/// active nodes once per step. Empty elements cost nothing else. With setSortInterval(N)
+/// the points are sorted by element every N steps (Kokkos::BinSort, sortPointsByElement),
+/// so the P2G/G2P of neighbouring points touch neighbouring nodes; a point's INDEX may then
+/// change at any step: follow a point by its `id`. profile() says where the time went.
 ///
 /// Typical use (the Simulation loop):
 ///   initialisePointState(deck.materials, points);          // physics/PointInitialisation
 ///   ExplicitTwoPhaseSolver solver(mesh, points, deck.materials);
+///   solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
 ///   for (const StageSpec& stage : deck.stages) {
 ///     solver.beginStage(stage);
 ///     const Real end = solver.time() + stage.duration;
@@ -37,6 +42,7 @@
 ///       // solver.diagnostics(), solver.nodalFields() for output
 ///     }
 ///   }
+///   std::printf("%s", solver.profile().describe().c_str());   // where the time went
 
 #include <string>
 #include <vector>
@@ -47,8 +53,10 @@
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
 #include "argine/physics/StabilityCheck.hpp"
+#include "argine/physics/StepProfile.hpp"
 #include "argine/physics/TimeStepControl.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
@@ -128,6 +136,23 @@ class ExplicitTwoPhaseSolver {
   /// see StabilityCheck.hpp). Default 10.
   void setEnergyGrowthLimit(Real factor) { energy_growth_limit_ = factor; }
 
+  /// Sort the points by element every `steps` steps (0: never, the default, so that a
+  /// caller's point indices stay valid). Sorting permutes the points (indices change, ids
+  /// stay) and changes results only by the order of the P2G sums (round-off). A run that
+  /// follows points by id (output, probes) should use kRecommendedSortInterval.
+  void setSortInterval(int steps) { sort_interval_ = steps > 0 ? steps : 0; }
+  /// Steps between two sorts of the points (0: never).
+  int sortInterval() const { return sort_interval_; }
+  /// Rarely enough that sorting costs ~1 % of the steps, often enough that points mixed by
+  /// large deformations are ordered again quickly (see verification/benchmark).
+  static constexpr int kRecommendedSortInterval = 50;
+
+  /// Wall time per phase of the steps (and chooseTimeStep calls) since construction or the
+  /// last resetProfile(), with the number of steps and point updates.
+  const StepProfile& profile() const { return profile_; }
+  /// Clears profile() (e.g. after warm-up steps).
+  void resetProfile() { profile_.reset(); }
+
  private:
   // The steps of Sec. 3.3, in order.
   void mapMassesMomentaAndForces();
@@ -139,17 +164,20 @@ class ExplicitTwoPhaseSolver {
   void computeStrainIncrements(Real dt);
   void updatePointStates();
   void relocatePoints();
+  void sortPoints();
   void checkStability(Real dt);
 
   const Mesh& mesh_;
   MaterialPoints& points_;
   MaterialTable table_;
   PointLocator locator_;
+  AffineElementMaps element_maps_;  ///< cheap relocation in affine elements
   PointShapes shapes_;
   PointRates rates_;
   GridFields grid_;
-  ActiveNodes nodes_in_use_;  ///< nodes whose grid fields hold the current/last step
-  ActiveNodes nodes_next_;    ///< nodes of the points' current elements (next step)
+  ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
+  ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
+  bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)
   StageBoundaryConditions boundaries_;
   TimeStepControl time_step_;
   MomentumSettings momentum_;
@@ -164,6 +192,8 @@ class ExplicitTwoPhaseSolver {
   Real energy_scale_ = 0;
   Real mesh_size_ = 0;  ///< diagonal of the mesh's bounding box (m)
   Real energy_growth_limit_ = 10;
+  int sort_interval_ = 0;
+  StepProfile profile_;
   std::vector<Kokkos::View<Real*, MemSpace>> output_;  ///< scalar copies for nodalFields()
 };
 

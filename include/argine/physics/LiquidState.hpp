@@ -49,10 +49,12 @@ struct LiquidState {
   Real conductivity = 0;                   ///< k (m/s)
 };
 
-/// S_L, dS_L/ds and k of a liquid-carrying material at p_L. A saturated material skips the
-/// retention curve (S_L = 1, dS_L/ds = 0, k = k_sat); an unsaturated one evaluates the SWRC
-/// and the HCC (thesis Sec. 2.5) at the suction.
-KOKKOS_INLINE_FUNCTION LiquidState liquidState(const PointMaterial& material, Real pressure) {
+/// S_L and k of a liquid-carrying material at p_L, what a point stores (the derivative is
+/// left 0: it costs two more pow calls per unsaturated point, and the point update does not
+/// need it). A saturated material skips the retention curve (S_L = 1, k = k_sat); an
+/// unsaturated one evaluates the SWRC and the HCC (thesis Sec. 2.5) at the suction.
+KOKKOS_INLINE_FUNCTION LiquidState saturationAndConductivity(const PointMaterial& material,
+                                                             Real pressure) {
   LiquidState state;
   if (material.phase != PhaseModel::Unsaturated) {
     state.conductivity = material.conductivity.saturated_conductivity;
@@ -60,8 +62,17 @@ KOKKOS_INLINE_FUNCTION LiquidState liquidState(const PointMaterial& material, Re
   }
   const Real suction = suctionOfPressure(pressure);
   state.saturation = saturation(material.retention, suction);
-  state.saturation_suction_derivative = saturationSuctionDerivative(material.retention, suction);
   state.conductivity = conductivity(material.conductivity, material.retention, suction);
+  return state;
+}
+
+/// S_L, dS_L/ds and k of a liquid-carrying material at p_L: saturationAndConductivity and,
+/// for an unsaturated material, the SWRC slope (0 when saturated).
+KOKKOS_INLINE_FUNCTION LiquidState liquidState(const PointMaterial& material, Real pressure) {
+  LiquidState state = saturationAndConductivity(material, pressure);
+  if (material.phase == PhaseModel::Unsaturated)
+    state.saturation_suction_derivative =
+        saturationSuctionDerivative(material.retention, suctionOfPressure(pressure));
   return state;
 }
 

@@ -105,7 +105,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
 KOKKOS_INLINE_FUNCTION void updateLiquidState(const PointUpdateViews& v, int p) {
   const PointMaterial& material = v.materials_m(v.points.material(p));
   if (material.phase != PhaseModel::Unsaturated) return;  // dry: none; saturated: constant
-  const LiquidState state = liquidState(material, v.points.pressure_liquid(p));
+  const LiquidState state = saturationAndConductivity(material, v.points.pressure_liquid(p));
   v.points.saturation(p) = state.saturation;
   v.points.conductivity(p) = state.conductivity;
 }

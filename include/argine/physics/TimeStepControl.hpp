@@ -52,6 +52,9 @@ class TimeStepControl {
   /// with the governing criterion and point, evaluated now.
   TimeStepChoice evaluate(const MaterialPoints& points, const MaterialTable& table) const;
 
+  /// Points were permuted (sorted): the last choice's point index follows its id.
+  void pointsReordered(const MaterialPoints& points);
+
   /// The last choice.
   const TimeStepChoice& last() const { return choice_; }
 
