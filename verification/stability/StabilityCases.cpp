@@ -1,0 +1,155 @@
+#include "StabilityCases.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "ColumnRun.hpp"
+#include "argine/materials/LinearElastic.hpp"
+#include "argine/materials/RetentionCurve.hpp"
+
+namespace argine::stability {
+
+namespace {
+
+constexpr int kColumnElements = 20;  ///< 1 m / 0.05 m, as the thesis' column
+
+MaterialSpec& soilOf(Deck& deck) { return deck.materials.front(); }
+const MaterialSpec& soilOf(const Deck& deck) { return deck.materials.front(); }
+
+RetentionSpec retentionOf(const StabilityCase& c) {
+  RetentionSpec spec;
+  spec.model = RetentionModel::VanGenuchten;
+  spec.reference_pressure = kSoils[c.soil].reference_pressure;
+  spec.lambda = kSoils[c.soil].lambda;
+  spec.saturation_min = kSoils[c.soil].saturation_min;
+  spec.saturation_max = 1;
+  return spec;
+}
+
+/// The four (n, E) combinations of the thesis at every S_L level, for one soil and kappa.
+void addMaterialGrid(std::vector<StabilityCase>& cases, const std::string& family, int soil,
+                     Real permeability, Real scale) {
+  for (const Real n : {0.4, 0.6})
+    for (const Real e : {1.0e7, 5.0e7})
+      for (const Real s : saturationLevels()) {
+        StabilityCase c;
+        c.family = family;
+        c.soil = soil;
+        c.porosity = n;
+        c.youngs_modulus = e;
+        c.permeability = permeability;
+        c.saturation = s;
+        c.scale = scale;
+        cases.push_back(c);
+      }
+}
+
+}  // namespace
+
+std::vector<Real> saturationLevels() { return {1.0, 0.9, 0.7, 0.5, 0.3, 0.1, 0.05, 0.02, 0.01}; }
+
+std::vector<StabilityCase> caseSet(const std::string& name) {
+  std::vector<StabilityCase> cases;
+  if (name == "saturation" || name == "all")
+    for (int soil = 0; soil < 3; ++soil) addMaterialGrid(cases, "saturation", soil, 2.0e-10, 1);
+  if (name == "permeability" || name == "all")
+    for (const Real kappa : {1.0e-9, 8.0e-11, 7.0e-12})
+      addMaterialGrid(cases, "permeability", 1, kappa, 1);
+  if (name == "mesh" || name == "all") addMaterialGrid(cases, "mesh", 1, 2.0e-10, 10);
+  if (name == "quick") {
+    // One saturated, one mid-range and one nearly dry state, for two soils and both n.
+    for (const int soil : {0, 2})
+      for (const Real s : {1.0, 0.5, 0.02}) {
+        StabilityCase c;
+        c.family = "quick";
+        c.soil = soil;
+        c.porosity = soil == 0 ? 0.4 : 0.6;
+        c.saturation = s;
+        cases.push_back(c);
+      }
+  }
+  if (name == "realistic")
+    for (const Real s : {1.0, 0.9, 0.5}) {
+      StabilityCase c;
+      c.family = "realistic";
+      c.soil = 2;
+      c.porosity = 0.4;
+      c.youngs_modulus = 1.0e7;
+      c.permeability = 1.0e-16;  // k = 1e-16 x 1000 x 9.81 / 1e-3 = 9.81e-10 m/s
+      c.liquid_bulk_modulus = 2.2e9;
+      c.saturation = s;
+      c.scale = 10;
+      cases.push_back(c);
+    }
+  if (cases.empty()) throw std::invalid_argument("unknown case set '" + name + "'");
+  return cases;
+}
+
+Real caseSuction(const StabilityCase& c) {
+  return suctionFromSaturation(retentionOf(c), c.saturation);
+}
+
+const char* soilName(const StabilityCase& c) { return kSoils[c.soil].name; }
+
+Deck caseDeck(const Deck& base, const StabilityCase& c, Real dt) {
+  Deck deck = base;
+  GeneratorSpec& box = deck.mesh.generator;
+  box.lower_left = {0, 0};
+  box.upper_right = {0.05 * c.scale, 1.0 * c.scale};
+  deck = verification::columnDeck(deck, kColumnElements);
+
+  MaterialSpec& soil = soilOf(deck);
+  soil.porosity = c.porosity;
+  soil.solid.youngs_modulus = c.youngs_modulus;
+  soil.liquid.bulk_modulus = c.liquid_bulk_modulus;
+  soil.retention = retentionOf(c);
+  soil.conductivity.model = ConductivityModel::Constant;
+  soil.conductivity.intrinsic_permeability = c.permeability;
+  soil.conductivity.saturated_conductivity =
+      c.permeability * soil.liquid.density * kStandardGravity / soil.liquid.viscosity;
+  const Real suction = caseSuction(c);
+  soil.initial.liquid_pressure = -suction;
+
+  StageSpec& stage = deck.stages.front();
+  stage.time_step.automatic = false;
+  stage.time_step.fixed_step = dt;
+  stage.mass_scaling = 1;
+  for (BoundarySpec& boundary : stage.boundaries)
+    if (boundary.kind == BoundaryKind::LiquidPressure) boundary.pressure = -suction;
+  return deck;
+}
+
+CriterionInput criterionInputOf(const Deck& deck) {
+  const MaterialSpec& soil = soilOf(deck);
+  const Real suction = -soil.initial.liquid_pressure;
+  CriterionInput in;
+  in.element_size = deck.mesh.generator.element_size;  // square elements: minimum height
+  in.porosity = soil.porosity;
+  in.saturation = saturation(soil.retention, suction);
+  in.saturation_suction_derivative = saturationSuctionDerivative(soil.retention, suction);
+  in.solid_density = soil.solid_density;
+  in.liquid_density = soil.liquid.density;
+  in.liquid_bulk_modulus = soil.liquid.bulk_modulus;
+  in.constrained_modulus = constrainedModulus(soil.solid);
+  in.hydraulic_conductivity = soil.conductivity.saturated_conductivity;
+  in.mass_scaling = deck.stages.front().mass_scaling;
+  return in;
+}
+
+std::vector<Real> predictedSteps(const CriterionInput& in) {
+  std::vector<Real> steps;
+  for (const CriterionKind kind : kAllCriteria) steps.push_back(criticalStep(kind, in));
+  return steps;
+}
+
+Real saturatedMieremetStep(CriterionInput in) {
+  in.saturation = 1;
+  in.saturation_suction_derivative = 0;
+  return criticalStepMieremet(in);
+}
+
+Real searchGuess(const CriterionInput& in) {
+  return std::min(criticalStepUnsaturatedCoupled(in), criticalStepMieremet(in));
+}
+
+}  // namespace argine::stability
