@@ -10,11 +10,11 @@
 #include "argine/mesh/Mesh.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/MaterialTable.hpp"
-#include "argine/physics/TimeStepControl.hpp"
-#include "argine/timestep/Criteria.hpp"
 #include "argine/physics/PointInitialisation.hpp"
+#include "argine/physics/TimeStepControl.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/simulation/Setup.hpp"
+#include "argine/timestep/Criteria.hpp"
 
 namespace argine::stability {
 
@@ -158,8 +158,8 @@ SearchResult findCriticalStep(const std::function<Deck(Real)>& make_deck, Real g
     dt_ref /= 2;
   }
   if (reference.verdict != Verdict::Stable)
-    throw RunError("no stable reference down to dt = " + std::to_string(dt_ref) + " s: " +
-                   reference.message);
+    throw RunError("no stable reference down to dt = " + std::to_string(dt_ref) +
+                   " s: " + reference.message);
   result.reference_step = dt_ref;
   result.reference_kinetic_energy = reference.max_kinetic_energy;
   result.seconds_per_step = reference.wall_seconds / std::max<long>(reference.steps, 1);

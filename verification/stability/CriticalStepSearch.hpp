@@ -21,8 +21,8 @@
 /// is within a few % of the RMS displacement (the phase error of the undamped column
 /// oscillation, see doc/stability.md), far below the departure tolerance.
 ///
-/// The search: the reference step (stable by construction), then a LADDER up by factor `ladder` until the
-/// first unstable run, then geometric bisection between the last stable and the first
+/// The search: the reference step (stable by construction), then a LADDER up by factor `ladder`
+/// until the first unstable run, then geometric bisection between the last stable and the first
 /// unstable rung until unstable / stable <= 1 + relative_width. Stability is not always
 /// monotone in dt here: the load can push points to saturation (S_L = 1, a much stiffer
 /// liquid) at some time in the run, and whether that happens depends on dt. Climbing from
@@ -70,28 +70,28 @@ RunOutcome runFixedStep(const Deck& deck, Real dt, Real duration, Real kinetic_e
                         bool track = false);
 
 struct SearchSettings {
-  Real steps_of_guess = 2000;       ///< simulated time = this x the first guess (s)
-  Real reference_fraction = 0.5;    ///< reference step / first guess
-  Real energy_factor = 10;          ///< test 3
-  Real departure_tolerance = 1.0;   ///< test 4 (see the header comment)
-  Real load = 1.0e5;                ///< top load (Pa), the pressure scale of test 4
-  Real relative_width = 0.02;       ///< bracket unstable/stable - 1 at the end
-  Real ladder = 1.15;               ///< ratio of two rungs of the ladder
-  int max_rungs = 80;               ///< the ladder gives up beyond ladder^this x the start
+  Real steps_of_guess = 2000;      ///< simulated time = this x the first guess (s)
+  Real reference_fraction = 0.5;   ///< reference step / first guess
+  Real energy_factor = 10;         ///< test 3
+  Real departure_tolerance = 1.0;  ///< test 4 (see the header comment)
+  Real load = 1.0e5;               ///< top load (Pa), the pressure scale of test 4
+  Real relative_width = 0.02;      ///< bracket unstable/stable - 1 at the end
+  Real ladder = 1.15;              ///< ratio of two rungs of the ladder
+  int max_rungs = 80;              ///< the ladder gives up beyond ladder^this x the start
 };
 
 struct SearchResult {
-  Real stable_step = 0;          ///< largest stable step found (s): the empirical dt_c
-  Real unstable_step = 0;        ///< smallest unstable step found (s)
+  Real stable_step = 0;                       ///< largest stable step found (s): the empirical dt_c
+  Real unstable_step = 0;                     ///< smallest unstable step found (s)
   Verdict unstable_reason = Verdict::Stable;  ///< why the smallest unstable step failed
-  Real departure_at_stable = 0;  ///< test 4's measure at stable_step
-  Real duration = 0;             ///< simulated time of every run (s)
-  Real reference_step = 0;       ///< (s)
-  Real reference_kinetic_energy = 0;  ///< largest kinetic energy of the reference (J per m)
-  int runs = 0;                  ///< runs made, the reference included
-  long steps = 0;                ///< steps made in all runs
-  double wall_seconds = 0;       ///< of all runs
-  double seconds_per_step = 0;   ///< of the reference run (setup included, amortised)
+  Real departure_at_stable = 0;               ///< test 4's measure at stable_step
+  Real duration = 0;                          ///< simulated time of every run (s)
+  Real reference_step = 0;                    ///< (s)
+  Real reference_kinetic_energy = 0;          ///< largest kinetic energy of the reference (J per m)
+  int runs = 0;                               ///< runs made, the reference included
+  long steps = 0;                             ///< steps made in all runs
+  double wall_seconds = 0;                    ///< of all runs
+  double seconds_per_step = 0;                ///< of the reference run (setup included, amortised)
   /// The reference run's criteria minima and S_L range (RunOutcome, tracked).
   std::vector<Real> criteria_min;
   Real saturation_min = 1, saturation_max = 0;

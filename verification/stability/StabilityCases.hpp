@@ -38,12 +38,13 @@ struct StabilityCase {
   Real scale = 1;                     ///< 1: 1 m x 0.05 m column, elements 0.05 m; 10: 10x
 };
 
-/// The degrees of saturation of the study: S_L = 1 to 0.01 (9 levels).
+/// The degrees of saturation of the study: S_L = 1 to 0.01 (8 levels).
 std::vector<Real> saturationLevels();
 
 /// The cases of a named set:
-///  saturation   3 soils x n {0.4, 0.6} x E {1e4, 5e4} kPa x 9 S_L levels, kappa 2e-10 m2
-///  permeability silt, kappa {1e-9, 8e-11, 7e-12} m2 (2e-10 is in "saturation"), same n, E, S_L
+///  saturation   3 soils x n {0.4, 0.6} x E {1e4, 5e4} kPa x 8 S_L levels, kappa 2e-10 m2
+///  permeability silt, kappa {1e-9, 8e-11, 7e-12} m2 (2e-10 is in "saturation"), n {0.4,
+///               0.6}, E 1e4 kPa, same S_L levels
 ///  mesh         silt, the column scaled 10x (elements 0.5 m), same n, E, S_L
 ///  all          the three above
 ///  quick        a small subset of "saturation" (the unit test)

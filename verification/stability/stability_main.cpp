@@ -89,11 +89,28 @@ int main(int argc, char** argv) {
         options.text("deck", std::string(ARGINE_STABILITY_DECK_DIR) + "/stability_column.yaml"));
 
     int check_index = -1;
-    std::vector<std::string> columns = {
-        "family", "soil", "porosity", "youngs_modulus_Pa", "permeability_m2", "conductivity_m_per_s",
-        "liquid_bulk_modulus_Pa", "element_size_m", "target_saturation", "suction_Pa",
-        "saturation", "dSds_per_Pa", "duration_s", "dt_c_s", "dt_unstable_s", "unstable_reason",
-        "departure_at_dt_c", "reference_dt_s", "runs", "steps", "wall_s", "seconds_per_step"};
+    std::vector<std::string> columns = {"family",
+                                        "soil",
+                                        "porosity",
+                                        "youngs_modulus_Pa",
+                                        "permeability_m2",
+                                        "conductivity_m_per_s",
+                                        "liquid_bulk_modulus_Pa",
+                                        "element_size_m",
+                                        "target_saturation",
+                                        "suction_Pa",
+                                        "saturation",
+                                        "dSds_per_Pa",
+                                        "duration_s",
+                                        "dt_c_s",
+                                        "dt_unstable_s",
+                                        "unstable_reason",
+                                        "departure_at_dt_c",
+                                        "reference_dt_s",
+                                        "runs",
+                                        "steps",
+                                        "wall_s",
+                                        "seconds_per_step"};
     int k = 0;
     for (const argine::CriterionKind kind : argine::kAllCriteria) {
       columns.push_back("crit_" + slug(argine::criterionName(kind)));
@@ -124,8 +141,8 @@ int main(int argc, char** argv) {
         scanCase(base, c, guess, options.numbers("scan", {}), settings);
         continue;
       }
-      const st::SearchResult r = st::findCriticalStep(
-          [&](Real dt) { return st::caseDeck(base, c, dt); }, guess, settings);
+      const st::SearchResult r =
+          st::findCriticalStep([&](Real dt) { return st::caseDeck(base, c, dt); }, guess, settings);
       table.row()
           .add(c.family)
           .add(st::soilName(c))
@@ -157,9 +174,9 @@ int main(int argc, char** argv) {
                 << " " << st::soilName(c) << " n=" << c.porosity << " E=" << c.youngs_modulus
                 << " kappa=" << c.permeability << " L=" << in.element_size
                 << " S_L=" << in.saturation << ": dt_c in [" << r.stable_step << ", "
-                << r.unstable_step << "] (" << st::verdictName(r.unstable_reason)
-                << "), guess " << guess << ", " << r.runs << " runs, " << r.steps << " steps, "
-                << r.wall_seconds << " s\n"
+                << r.unstable_step << "] (" << st::verdictName(r.unstable_reason) << "), guess "
+                << guess << ", " << r.runs << " runs, " << r.steps << " steps, " << r.wall_seconds
+                << " s\n"
                 << std::flush;
       // The step an automatic run with the criterion would take at most: its minimum over
       // the states of the (converged) reference run, not only the initial state.
@@ -171,8 +188,8 @@ int main(int argc, char** argv) {
         ++failures;
       }
     }
-    const std::string file = "stability_" + set + "_" + std::to_string(shard) + "of" +
-                             std::to_string(shards) + ".csv";
+    const std::string file =
+        "stability_" + set + "_" + std::to_string(shard) + "of" + std::to_string(shards) + ".csv";
     table.writeCsv(av::pathIn(output, file));
     std::cout << "wrote " << av::pathIn(output, file) << "\n";
     if (check_index >= 0)
