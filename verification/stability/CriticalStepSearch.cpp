@@ -131,6 +131,9 @@ RunOutcome runFixedStep(const Deck& deck, Real dt, Real duration, Real kinetic_e
 }
 
 Real departure(const RunOutcome& run, const RunOutcome& reference, Real load) {
+  if (run.displacement.size() != reference.displacement.size() ||
+      run.pressure.size() != reference.pressure.size())
+    return std::numeric_limits<Real>::quiet_NaN();  // one of the two did not run through
   const std::vector<double> zero(reference.displacement.size(), 0.0);
   const double u_scale = rms(reference.displacement, zero);
   const double du = rms(run.displacement, reference.displacement);
@@ -151,7 +154,7 @@ SearchResult findCriticalStep(const std::function<Deck(Real)>& make_deck, Real g
   // The converged reference: a small step, halved until it runs through.
   RunOutcome reference;
   Real dt_ref = settings.reference_fraction * guess;
-  for (int attempt = 0; attempt < 8; ++attempt) {
+  for (int attempt = 0; attempt < settings.reference_halvings; ++attempt) {
     reference = runFixedStep(make_deck(dt_ref), dt_ref, result.duration, 0, true);
     account(reference);
     if (reference.verdict == Verdict::Stable) break;

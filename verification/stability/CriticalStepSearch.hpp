@@ -76,6 +76,7 @@ struct SearchSettings {
   Real departure_tolerance = 1.0;  ///< test 4 (see the header comment)
   Real load = 1.0e5;               ///< top load (Pa), the pressure scale of test 4
   Real relative_width = 0.02;      ///< bracket unstable/stable - 1 at the end
+  int reference_halvings = 6;      ///< RunError when no reference at guess x 0.5^(this+1)
   Real ladder = 1.15;              ///< ratio of two rungs of the ladder
   int max_rungs = 80;              ///< the ladder gives up beyond ladder^this x the start
 };

@@ -47,6 +47,7 @@ std::vector<Real> saturationLevels();
 ///               0.6}, E 1e4 kPa, same S_L levels
 ///  mesh         silt, the column scaled 10x (elements 0.5 m), same n, E, S_L
 ///  all          the three above
+///  core         "saturation" at E 1e4 kPa only (24 fewer cases per modulus)
 ///  quick        a small subset of "saturation" (the unit test)
 ///  realistic    clay at k ~ 1e-9 m/s (kappa 1e-16 m2), elements 0.5 m, real K_L 2.2 GPa
 /// std::invalid_argument for another name.
