@@ -54,7 +54,7 @@ TEST(Criteria, NamesAreDistinctAndDispatchMatches) {
     names.insert(criterionName(kind));
     EXPECT_GT(criticalStep(kind, in), 0.0) << criterionName(kind);
   }
-  EXPECT_EQ(names.size(), 8u);
+  EXPECT_EQ(names.size(), 9u);
   EXPECT_EQ(criticalStep(CriterionKind::Mieremet, in), criticalStepMieremet(in));
   EXPECT_EQ(criticalStep(CriterionKind::UnsaturatedCoupled, in),
             criticalStepUnsaturatedCoupled(in));
@@ -156,6 +156,29 @@ TEST(Criteria, MieremetUnsaturatedAdaptationHand) {
   expectRel(criticalStepMieremet(unsaturatedPoint()), 1.729395809e-4);
 }
 
+TEST(Criteria, MieremetLiquidDragHand) {
+  // Same b, d, B as the adaptation above (K_e = 49998.75, rho_m = 1700): b = 2695999.27,
+  // d = 5.33320000e10, B = 5352140.08; the damping term carries S_L once:
+  // a = S_L n rho_m g / ((1-n) rho_S k) = 0.5*0.4*1700*10/(1500*1e-4) = 22666.667 1/s;
+  // dt = (-2a + sqrt(4a^2 + 8B))/B = (-45333.333 + sqrt(2.05511e9 + 4.28171e7))/5352140.08
+  //    = 8.77804367e-5 s (half of the S_L^2 form's 1.729e-4 here: drag-dominated).
+  expectRel(criticalStepMieremetLiquidDrag(unsaturatedPoint()), 8.778043668e-5);
+  EXPECT_LT(criticalStepMieremetLiquidDrag(unsaturatedPoint()),
+            criticalStepMieremet(unsaturatedPoint()));
+  // Saturated: the two forms are the same (Table 4.5, S_L = 1).
+  EXPECT_EQ(criticalStepMieremetLiquidDrag(basePoint()), criticalStepMieremet(basePoint()));
+  // Strong drag: dt -> 2/a, a = 0.5*0.4*1700*10/(1500*1e-12) = 2.2666667e12 -> 8.8235294e-13 s.
+  CriterionInput tight = unsaturatedPoint();
+  tight.hydraulic_conductivity = 1e-12;
+  expectRel(criticalStepMieremetLiquidDrag(tight), 8.8235294118e-13, 1e-6);
+  // No liquid: no drag term, the same as the S_L^2 form.
+  CriterionInput dry = unsaturatedPoint();
+  dry.saturation = 0;
+  EXPECT_EQ(criticalStepMieremetLiquidDrag(dry), criticalStepMieremet(dry));
+  EXPECT_EQ(criticalStep(CriterionKind::MieremetLiquidDrag, unsaturatedPoint()),
+            criticalStepMieremetLiquidDrag(unsaturatedPoint()));
+}
+
 TEST(Criteria, MieremetMassScaling) {
   // f = 4: a/4, b/4, d/16 in the saturated hand computation above -> 7.89997943e-5 s.
   CriterionInput in = basePoint();
@@ -174,7 +197,8 @@ TEST(Criteria, WaveCriteriaScaleWithSqrtOfMassScalingParabolicOnesDoNot) {
   // dt = 2/omega) and f (drag-dominated, dt ~ 1/(omega xi) ~ rho/q); Mieremet likewise
   // (dt = 2/sqrt(lambda_max) without drag, 2/a with strong drag).
   for (CriterionKind kind : {CriterionKind::UnsaturatedLiquid, CriterionKind::UnsaturatedMixture,
-                             CriterionKind::UnsaturatedCoupled, CriterionKind::Mieremet}) {
+                             CriterionKind::UnsaturatedCoupled, CriterionKind::Mieremet,
+                             CriterionKind::MieremetLiquidDrag}) {
     const Real ratio = criticalStep(kind, scaled) / criticalStep(kind, basePoint());
     EXPECT_GT(ratio, 3.0 - 1e-12) << criterionName(kind);
     EXPECT_LT(ratio, 9.0 + 1e-12) << criterionName(kind);

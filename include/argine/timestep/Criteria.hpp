@@ -49,7 +49,8 @@ inline constexpr CriterionKind kAllCriteria[] = {CriterionKind::CflDry,
                                                  CriterionKind::UnsaturatedLiquid,
                                                  CriterionKind::UnsaturatedMixture,
                                                  CriterionKind::UnsaturatedCoupled,
-                                                 CriterionKind::Mieremet};
+                                                 CriterionKind::Mieremet,
+                                                 CriterionKind::MieremetLiquidDrag};
 
 /// Name for logs and decks.
 inline constexpr const char* criterionName(CriterionKind kind) {
@@ -70,6 +71,8 @@ inline constexpr const char* criterionName(CriterionKind kind) {
       return "coupled";
     case CriterionKind::Mieremet:
       return "Mieremet";
+    case CriterionKind::MieremetLiquidDrag:
+      return "Mieremet liquid drag";
   }
   return "unknown";
 }
@@ -185,17 +188,16 @@ KOKKOS_INLINE_FUNCTION Real criticalStepUnsaturatedCoupled(const CriterionInput&
   return yerroStep(omega, q * (s * n / ((1 - n) * rho_s) + 1 / rho_l) / (2 * omega));
 }
 
-/// Mieremet, Eq. 4.67 with the terms of Anura3D / Table 4.5, in the unsaturated adaptation
-/// of Sec. 7.2 (identical to the saturated criterion at S_L = 1, dS_L/ds = 0):
-///   rho_m = (1-n) rho_S + S_L n rho_L                  (rho_sat when S_L = 1)
-///   a = S_L^2 n rho_m (mu/kappa) / ((1-n) rho_S rho_L)  (= n rho_sat g / ((1-n) rho_S k))
+/// Eq. 4.67 with the drag term `a` (1/s) given and b, d of the unsaturated adaptation of
+/// Sec. 7.2 (K_L -> K_e, rho_sat -> rho_m; identical to Table 4.5's saturated b, d at S_L = 1):
+///   rho_m = (1-n) rho_S + S_L n rho_L
 ///   b = 4 [n rho_m K_e + (1-2n) rho_L K_e + n rho_L E'_c] / (n (1-n) rho_S rho_L L_i^2)
 ///   d = 16 E'_c K_e / ((1-n) rho_S rho_L L_i^4)
 ///   dt = (-2a + sqrt(4a^2 + 8B)) / B,  B = b + sqrt(b^2 - 4d),
 /// evaluated as dt = 8 / (2a + sqrt(4a^2 + 8B)) (same value, finite as B -> 0).
-/// Densities carry f, so a, b, d become a/f, b/f, d/f^2. Where the adaptation has
-/// b^2 < 4d (very dry states, thesis Sec. 7.3) the inner root is taken as 0.
-KOKKOS_INLINE_FUNCTION Real criticalStepMieremet(const CriterionInput& in) {
+/// Densities carry f, so b, d become b/f, d/f^2 (the callers' a becomes a/f). Where the
+/// adaptation has b^2 < 4d (very dry states, thesis Sec. 7.3) the inner root is taken as 0.
+KOKKOS_INLINE_FUNCTION Real mieremetStep(const CriterionInput& in, Real a) {
   const Real n = in.porosity;
   const Real s = in.saturation;
   const Real dx2 = in.element_size * in.element_size;
@@ -204,8 +206,6 @@ KOKKOS_INLINE_FUNCTION Real criticalStepMieremet(const CriterionInput& in) {
   const Real rho_m = (1 - n) * rho_s + s * n * rho_l;
   const Real k_e = effectiveLiquidStiffness(in);
   const Real e_c = in.constrained_modulus;
-  // S_L^2 n mu/kappa = S_L q_L; written so that S_L = 0 gives a = 0 even when k = 0.
-  const Real a = s * liquidDrag(in) * rho_m / ((1 - n) * rho_s * rho_l);
   const Real b = 4 * (n * rho_m * k_e + (1 - 2 * n) * rho_l * k_e + n * rho_l * e_c) /
                  (n * (1 - n) * rho_s * rho_l * dx2);
   const Real d = 16 * e_c * k_e / ((1 - n) * rho_s * rho_l * dx2 * dx2);
@@ -214,6 +214,38 @@ KOKKOS_INLINE_FUNCTION Real criticalStepMieremet(const CriterionInput& in) {
   const Real denominator = 2 * a + kmath::sqrt(4 * a * a + 8 * big_b);
   if (!(denominator > 0)) return kmath::infinity();
   return 8 / denominator;
+}
+
+/// q_L rho_m / ((1-n) rho_S rho_L) (1/s): Mieremet's drag term a with the drag q_L (Eq. 7.7);
+/// at S_L = 1 Table 4.5's a = n rho_sat (mu/kappa) / ((1-n) rho_S rho_L). 0 without liquid.
+KOKKOS_INLINE_FUNCTION Real mieremetDragTerm(const CriterionInput& in) {
+  const Real n = in.porosity;
+  const Real rho_s = in.solid_density * in.mass_scaling;
+  const Real rho_l = in.liquid_density * in.mass_scaling;
+  const Real rho_m = (1 - n) * rho_s + in.saturation * n * rho_l;
+  return liquidDrag(in) * rho_m / ((1 - n) * rho_s * rho_l);
+}
+
+/// Mieremet, Eq. 4.67 with the terms of Anura3D / Table 4.5, in the unsaturated adaptation
+/// of Sec. 7.2 (identical to the saturated criterion at S_L = 1, dS_L/ds = 0):
+///   a = S_L^2 n rho_m (mu/kappa) / ((1-n) rho_S rho_L)  (= n rho_sat g / ((1-n) rho_S k)),
+/// i.e. S_L times mieremetDragTerm, with b, d of mieremetStep.
+KOKKOS_INLINE_FUNCTION Real criticalStepMieremet(const CriterionInput& in) {
+  // S_L^2 n mu/kappa = S_L q_L; written so that S_L = 0 gives a = 0 even when k = 0.
+  const Real a = in.saturation > 0 ? in.saturation * mieremetDragTerm(in) : Real(0);
+  return mieremetStep(in, a);
+}
+
+/// Mieremet with the unsaturated liquid drag: Eq. 4.67, b and d as criticalStepMieremet, but
+/// the damping term carries the drag q_L = S_L n mu/kappa of Eq. 7.7 once, as the Yerro-type
+/// unsaturated criteria of Table 4.4 do (xi_L, xi_C ~ S_L n mu/kappa), instead of S_L^2 q:
+///   a = S_L n rho_m (mu/kappa) / ((1-n) rho_S rho_L) = mieremetDragTerm.
+/// Identical to criticalStepMieremet at S_L = 1. With strong drag dt -> 2/a grows like
+/// 1/(S_L rho_m) as the soil desaturates, not 1/(S_L^2 rho_m): the V5 study
+/// (doc/stability.md) measures 1/(S_L rho_m) in argine at kappa = 7e-12 m^2, where the
+/// S_L^2 form allows up to 2.6x the empirical critical step.
+KOKKOS_INLINE_FUNCTION Real criticalStepMieremetLiquidDrag(const CriterionInput& in) {
+  return mieremetStep(in, mieremetDragTerm(in));
 }
 
 /// The critical step of one criterion (s).
@@ -235,6 +267,8 @@ KOKKOS_INLINE_FUNCTION Real criticalStep(CriterionKind kind, const CriterionInpu
       return criticalStepUnsaturatedCoupled(in);
     case CriterionKind::Mieremet:
       return criticalStepMieremet(in);
+    case CriterionKind::MieremetLiquidDrag:
+      return criticalStepMieremetLiquidDrag(in);
   }
   return kmath::infinity();
 }

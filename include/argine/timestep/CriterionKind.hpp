@@ -14,6 +14,9 @@ enum class CriterionKind {
   UnsaturatedMixture,  ///< Table 4.4 / Appendix (mixture momentum)
   UnsaturatedCoupled,  ///< Table 4.4 / Appendix (coupled system)
   Mieremet,            ///< Eq. 4.67 (saturated), as Anura3D codes it
+  /// Eq. 4.67 with the unsaturated drag q_L = S_L n mu/kappa of Eq. 7.7 in its damping term
+  /// (one power of S_L where the Sec. 7.2 adaptation has S_L^2): doc/stability.md (V5).
+  MieremetLiquidDrag,
 };
 
 }  // namespace argine
