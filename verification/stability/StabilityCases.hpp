@@ -48,7 +48,8 @@ std::vector<Real> saturationLevels();
 ///  mesh         silt, the column scaled 10x (elements 0.5 m), same n, E, S_L
 ///  all          the three above
 ///  core         "saturation" at E 1e4 kPa only (24 fewer cases per modulus)
-///  quick        a small subset of "saturation" (the unit test)
+///  quick        6 cases: sand n 0.4 and clay n 0.6 at S_L 1 and 0.5 (kappa 2e-10 m2), silt
+///               n 0.6, kappa 7e-12 m2 at S_L 0.5 and 0.3 (the unit test)
 ///  realistic    clay at k ~ 1e-9 m/s (kappa 1e-16 m2), elements 0.5 m, real K_L 2.2 GPa
 /// std::invalid_argument for another name.
 std::vector<StabilityCase> caseSet(const std::string& name);

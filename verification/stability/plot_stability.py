@@ -18,14 +18,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 CRITERIA = ["cfl_dry", "cfl_undrained", "consolidation", "infiltration", "liquid", "mixture",
-            "coupled", "mieremet"]
+            "coupled", "mieremet", "mieremet_liquid_drag"]
 LABELS = {"cfl_dry": "CFL dry (4.62)", "cfl_undrained": "CFL undrained (4.64)",
           "consolidation": "consolidation (4.61)", "infiltration": "infiltration (4.63)",
           "liquid": "liquid (T4.4)", "mixture": "mixture (T4.4)", "coupled": "coupled (T4.4)",
-          "mieremet": "Mieremet adapted (4.67)", "mieremet_saturated": "Mieremet saturated"}
+          "mieremet": "Mieremet adapted (4.67)", "mieremet_saturated": "Mieremet saturated",
+          "mieremet_liquid_drag": "Mieremet liquid drag"}
 STYLE = {"cfl_dry": ("0.6", ":"), "cfl_undrained": ("0.3", ":"), "consolidation": ("tab:olive", "--"),
          "infiltration": ("tab:cyan", "--"), "liquid": ("tab:blue", "-."), "mixture": ("tab:purple", "-."),
          "coupled": ("tab:red", "-"), "mieremet": ("tab:green", "-"),
+         "mieremet_liquid_drag": ("tab:orange", "-"),
          "mieremet_saturated": ("k", "--")}
 
 
@@ -56,9 +58,10 @@ def merge(directory, out):
 
 
 def production(row):
-    """The proposed production criterion: adapted Mieremet (4.67 with the Sec. 7.2 terms),
-    the step an automatic run takes = its minimum over the states of the run."""
-    return min(number(row, "crit_mieremet"), number(row, "run_mieremet"))
+    """The proposed production criterion: Mieremet liquid drag (4.67, b and d of Sec. 7.2, the
+    drag q_L of Eq. 7.7 once in a), the step an automatic run takes = its minimum over the
+    states of the run (TimeStepControl recomputes it every step)."""
+    return min(number(row, "crit_mieremet_liquid_drag"), number(row, "run_mieremet_liquid_drag"))
 
 
 def label_of(row):
@@ -82,6 +85,8 @@ def soil_chart(rows, soil, figures, family="saturation", tag=None):
                     label=LABELS[c])
         ax.plot(s, [number(r, "run_mieremet") for r in g], "v", color="tab:green", ms=5,
                 mfc="none", label="Mieremet adapted, min over run")
+        ax.plot(s, [production(r) for r in g], "^", color="tab:orange", ms=5,
+                mfc="none", label="Mieremet liquid drag, min over run (production)")
         ax.plot(s, [number(r, "dt_c_s") for r in g], "o", color="k", ms=6,
                 label="empirical $\\Delta t_c$")
         ax.set_xscale("log")
@@ -97,22 +102,25 @@ def soil_chart(rows, soil, figures, family="saturation", tag=None):
 
 
 def ratio_chart(rows, figures):
-    sel = [r for r in rows if r["family"] in ("saturation", "permeability", "mesh")]
+    sel = [r for r in rows if r["family"] in ("saturation", "permeability", "mesh", "quick")
+           and number(r, "dt_c_s") > 0]
     names = CRITERIA + ["mieremet_saturated", "production"]
-    fig, axes = plt.subplots(2, 5, figsize=(18, 7), sharex=True)
+    fig, axes = plt.subplots(3, 4, figsize=(16, 10), sharex=True)
     colors = {"sand": "tab:orange", "silt": "tab:brown", "clay": "tab:blue"}
     for ax, c in zip(axes.flat, names):
         for r in sel:
             pred = production(r) if c == "production" else number(r, "crit_" + c)
-            marker = {"saturation": "o", "permeability": "s", "mesh": "^"}[r["family"]]
+            marker = {"saturation": "o", "permeability": "s", "mesh": "^", "quick": "o"}[r["family"]]
             ax.plot(number(r, "saturation"), number(r, "dt_c_s") / pred, marker, ms=3,
                     color=colors[r["soil"]], alpha=0.7)
         ax.axhline(1, color="k", lw=1)
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_title(LABELS.get(c, "production: Mieremet adapted, min over run"), fontsize=9)
+        ax.set_title(LABELS.get(c, "production: Mieremet liquid drag, min over run"), fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
-    for ax in axes[1]:
+    for ax in axes.flat[len(names):]:
+        ax.axis("off")
+    for ax in axes[-1]:
         ax.set_xlabel("$S_L$ (initial)")
     for ax in axes[:, 0]:
         ax.set_ylabel("empirical / predicted")
@@ -178,12 +186,22 @@ def normalised_chart(rows, figures):
 
 
 def summary(rows):
-    sel = [r for r in rows if r["family"] in ("saturation", "permeability", "mesh")]
-    out = ["| criterion | cases | unsafe (pred > dt_c) | min dt_c/pred | median | max |",
+    sel = [r for r in rows if r["family"] in ("saturation", "permeability", "mesh", "quick")
+           and number(r, "dt_c_s") > 0]
+    none = [r for r in rows if number(r, "dt_c_s") <= 0]
+    everything = [r for r in rows if r["family"] != "realistic"]
+    out = ["cases with a critical step: %d; without any stable step: %d (%s)" % (
+        len(sel), len(none), ", ".join("%s %s n=%g S_L=%.3g" % (
+            r["family"], r["soil"], number(r, "porosity"), number(r, "saturation")) for r in none)),
+        "",
+        "| criterion | cases | unsafe (pred > dt_c) | min dt_c/pred | median | max |",
            "|---|---|---|---|---|---|"]
 
     def line(name, preds):
-        ratios = sorted(number(r, "dt_c_s") / p for r, p in zip(sel, preds))
+        ratios = sorted(number(r, "dt_c_s") / p for r, p in zip(sel, preds)
+                        if number(r, "dt_c_s") > 0 and p > 0)
+        if not ratios:
+            return
         unsafe = sum(1 for q in ratios if q < 1)
         out.append("| %s | %d | %d | %.3f | %.3f | %.3f |" % (
             name, len(ratios), unsafe, ratios[0], ratios[len(ratios) // 2], ratios[-1]))
@@ -195,16 +213,56 @@ def summary(rows):
                                            for r in sel])
     line("min(coupled, Mieremet adapted), initial", [min(number(r, "crit_coupled"),
                                                          number(r, "crit_mieremet")) for r in sel])
+    line("production x safety 0.5", [0.5 * production(r) for r in sel])
+    line("min(production, consolidation over run) (proposed default set)",
+         [min(production(r), number(r, "crit_consolidation"), number(r, "run_consolidation"))
+          for r in sel])
+    line("default before (min(Mieremet adapted, consolidation), over run) x 0.5",
+         [0.5 * min(number(r, "crit_mieremet"), number(r, "run_mieremet"),
+                    number(r, "crit_consolidation"), number(r, "run_consolidation")) for r in sel])
     gain = sorted(production(r) / number(r, "crit_mieremet_saturated") for r in sel)
+    waste = sorted(number(r, "dt_c_s") / production(r) for r in sel)
+    out.append("")
+    out.append("empirical / production: min %.3f, median %.3f, max %.3f" % (
+        waste[0], waste[len(waste) // 2], waste[-1]))
     out.append("")
     out.append("production (Mieremet adapted, min over run) / Mieremet saturated: min %.3f, "
                "median %.3f, max %.3f over %d cases" % (gain[0], gain[len(gain) // 2], gain[-1],
                                                          len(gain)))
+    # dt_c per case group against S_L (ms), and the production ratio dt_c / production.
+    levels = sorted({number(r, "target_saturation") for r in sel}, reverse=True)
+    groups = []
+    for r in sel:
+        g = (r["family"], r["soil"], number(r, "porosity"), number(r, "youngs_modulus_Pa"),
+             number(r, "permeability_m2"), number(r, "element_size_m"))
+        if g not in groups:
+            groups.append(g)
+    for title, value in (("empirical dt_c (ms); '-' = no stable step", lambda r: "%.4g" % (
+            1e3 * number(r, "dt_c_s"))),
+                         ("empirical dt_c / production step (Mieremet liquid drag, min over run)",
+                          lambda r: "%.2f" % (number(r, "dt_c_s") / production(r)))):
+        out.append("")
+        out.append(title + ":")
+        out.append("")
+        out.append("| set | soil | n | E (kPa) | kappa (m2) | L (m) | " +
+                   " | ".join("S_L %g" % s for s in levels) + " |")
+        out.append("|---" * (6 + len(levels)) + "|")
+        for g in groups:
+            cells = []
+            for lv in levels:
+                hit = [r for r in rows if (r["family"], r["soil"], number(r, "porosity"),
+                                           number(r, "youngs_modulus_Pa"),
+                                           number(r, "permeability_m2"),
+                                           number(r, "element_size_m")) == g
+                       and number(r, "target_saturation") == lv]
+                cells.append(value(hit[0]) if hit and number(hit[0], "dt_c_s") > 0 else "-")
+            out.append("| %s | %s | %g | %g | %g | %g | " % (g[0], g[1], g[2], g[3] / 1e3, g[4],
+                                                            g[5]) + " | ".join(cells) + " |")
     real = [r for r in rows if r["family"] == "realistic"]
     if real:
         out.append("")
         out.append("| realistic clay (k=%.3g m/s, L=%g m, K_L=%.3g Pa) S_L | dt_c (s) | Mieremet "
-                   "adapted (s) | s/step (160 points) | steps for 1 h | wall for 1 h |" % (
+                   "liquid drag (s) | s/step (80 points) | steps for 1 h | wall for 1 h |" % (
                        number(real[0], "conductivity_m_per_s"), number(real[0], "element_size_m"),
                        number(real[0], "liquid_bulk_modulus_Pa")))
         out.append("|---|---|---|---|---|---|")
@@ -212,7 +270,7 @@ def summary(rows):
             steps = 3600 / number(r, "dt_c_s")
             wall = steps * number(r, "seconds_per_step")
             out.append("| %.3g | %.3g | %.3g | %.3g | %.2g | %.2g years |" % (
-                number(r, "saturation"), number(r, "dt_c_s"), number(r, "crit_mieremet"),
+                number(r, "saturation"), number(r, "dt_c_s"), production(r),
                 number(r, "seconds_per_step"), steps, wall / 3.15e7))
     return "\n".join(out)
 
