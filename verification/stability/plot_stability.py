@@ -217,6 +217,8 @@ def summary(rows):
     line("min(production, consolidation over run) (proposed default set)",
          [min(production(r), number(r, "crit_consolidation"), number(r, "run_consolidation"))
           for r in sel])
+    line("proposed default set x 0.5", [0.5 * min(production(r), number(r, "crit_consolidation"),
+                                                  number(r, "run_consolidation")) for r in sel])
     line("default before (min(Mieremet adapted, consolidation), over run) x 0.5",
          [0.5 * min(number(r, "crit_mieremet"), number(r, "run_mieremet"),
                     number(r, "crit_consolidation"), number(r, "run_consolidation")) for r in sel])
@@ -226,7 +228,7 @@ def summary(rows):
     out.append("empirical / production: min %.3f, median %.3f, max %.3f" % (
         waste[0], waste[len(waste) // 2], waste[-1]))
     out.append("")
-    out.append("production (Mieremet adapted, min over run) / Mieremet saturated: min %.3f, "
+    out.append("production (Mieremet liquid drag, min over run) / Mieremet saturated: min %.3f, "
                "median %.3f, max %.3f over %d cases" % (gain[0], gain[len(gain) // 2], gain[-1],
                                                          len(gain)))
     # dt_c per case group against S_L (ms), and the production ratio dt_c / production.
