@@ -107,7 +107,7 @@ TEST(DeckValidation, CriteriaAreCheckedWordByWord) {
                   "Stages/load/Time Step/Criteria",
                   "'cfl' is not allowed; allowed: cfl dry, cfl undrained, consolidation, "
                   "infiltration, unsaturated liquid, unsaturated mixture, unsaturated coupled, "
-                  "mieremet; did you mean 'cfl dry' or 'cfl undrained'?");
+                  "mieremet, mieremet liquid drag; did you mean 'cfl dry' or 'cfl undrained'?");
   expectDeckError(replaced(kBaseDeck, "Duration (s): 0.1", fixed + "cfl dry\"}"),
                   "Stages/load/Time Step/Criteria", "'cfl dry' is listed twice");
 }

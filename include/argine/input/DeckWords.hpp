@@ -67,6 +67,7 @@ inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
     {"unsaturated mixture", CriterionKind::UnsaturatedMixture},
     {"unsaturated coupled", CriterionKind::UnsaturatedCoupled},
     {"mieremet", CriterionKind::Mieremet},
+    {"mieremet liquid drag", CriterionKind::MieremetLiquidDrag},
 };
 
 inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
