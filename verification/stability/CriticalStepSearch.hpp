@@ -11,21 +11,22 @@
 ///  3. energy growth: the kinetic energy exceeds `energy_factor` times the largest kinetic
 ///     energy of the converged small-step reference over the same time. A growing mode is
 ///     caught long before it reaches the bound of 2 (which allows ~30x the physical velocity
-///     here), so the verdict does not depend on how long the run is beyond a few e-foldings;
+///     here);
 ///  4. departure: at the end time the solid displacement or the liquid pressure departs from
 ///     the reference by more than `departure_tolerance` (RMS over the points, relative to the
 ///     RMS reference displacement, resp. to the top load): an unstable mode that saturates
 ///     (e.g. through the retention curve) without blowing up still gives a wrong answer.
+///     The default tolerance 1.0 is loose on purpose: after the sudden load the column
+///     oscillates undamped, and the phase error makes the late-time difference grow smoothly
+///     with dt (tens of % near the limit) without any jump there (doc/stability.md).
 /// The reference is the same column run at `reference_fraction` x the search's first guess
-/// (halved until it is itself stable by tests 1-2). Its difference from a run at half its step
-/// is within a few % of the RMS displacement (the phase error of the undamped column
-/// oscillation, see doc/stability.md), far below the departure tolerance.
+/// (halved until it is itself stable by tests 1-2).
 ///
 /// The search: the reference step (stable by construction), then a LADDER up by factor `ladder`
 /// until the first unstable run, then geometric bisection between the last stable and the first
 /// unstable rung until unstable / stable <= 1 + relative_width. Stability is not always
-/// monotone in dt here: the load can push points to saturation (S_L = 1, a much stiffer
-/// liquid) at some time in the run, and whether that happens depends on dt. Climbing from
+/// monotone in dt here: the load can push points to wetter, stiffer states at some time in
+/// the run, and whether that happens depends on dt. Climbing from
 /// below finds the FIRST instability (to the ladder's resolution) rather than any stable
 /// step above an unstable one, which plain doubling + bisection can report. The reported
 /// critical step is the largest stable step of the final bracket.
