@@ -253,7 +253,7 @@ ListSchema timeStepKeys() {
   step.add(KeySpec::choices("Criteria", deckWords(kCriterionWords),
                             "critical-step criteria, a list or a comma-separated string")
                .when("Mode", {"automatic"})
-               .byDefault(Words{"mieremet", "consolidation"}));
+               .byDefault(Words{"mieremet liquid drag", "consolidation"}));  // as Deck.hpp
   step.add(KeySpec::integer("Update Interval", "recompute the step every N steps")
                .atLeast(1)
                .when("Mode", {"automatic"})
