@@ -261,6 +261,99 @@ ListSchema timeStepKeys() {
   return step;
 }
 
+// ---------------------------------------------------------------- hydraulic conditions (P3)
+// Conditions on the moving free boundary (thesis Sec. 4.1-4.3): where (a zone tested on the
+// current free boundary, or a side set) and a value in time (constant, table or CSV file).
+
+const Words kHydraulicKinds{"total head", "pressure series", "infiltration", "seepage face"};
+
+ListSchema zoneKeys() {
+  ListSchema zone;
+  zone.add(KeySpec::choice("Type", deckWords(kZoneWords),
+                           "region tested at the midpoints of the current free sides: "
+                           "everywhere, half-plane, box or polyline band")
+               .require());
+  zone.add(KeySpec::reals("Point (m)", "m", 2, "a point on the edge of the half-plane")
+               .when("Type", {"half-plane"})
+               .require());
+  zone.add(KeySpec::reals("Inside Direction", "-", 2,
+                          "vector pointing into the half-plane: the zone is (x - Point) . "
+                          "direction >= 0 (x < 8 m: Point [8, 0], direction [-1, 0])")
+               .when("Type", {"half-plane"})
+               .require());
+  zone.add(KeySpec::reals("Lower Left (m)", "m", 2, "corner (x_min, y_min) of the box")
+               .when("Type", {"box"})
+               .require());
+  zone.add(KeySpec::reals("Upper Right (m)", "m", 2, "corner (x_max, y_max) of the box")
+               .when("Type", {"box"})
+               .require());
+  zone.add(KeySpec::reals("Vertices (m)", "m", 0, "polyline vertices x0, y0, x1, y1, ...")
+               .when("Type", {"polyline band"})
+               .require());
+  zone.add(KeySpec::real("Width (m)", "m", "largest distance from the polyline")
+               .above(0)
+               .when("Type", {"polyline band"})
+               .require());
+  return zone;
+}
+
+/// Adds the three ways of giving a time-dependent `value` (a constant `<value> (<unit>)`,
+/// a `<value> Table` of time, value pairs, a `<value> File` CSV), exactly one of them.
+void addTimeSeriesKeys(ListSchema& boundary, const std::string& value, const std::string& unit,
+                       const std::string& kind, const std::string& doc, bool constant) {
+  if (constant)
+    boundary.add(
+        KeySpec::real(value + " (" + unit + ")", unit, "constant " + doc).when("Type", {kind}));
+  boundary.add(KeySpec::reals(value + " Table", "s, " + unit, 0,
+                              doc + " in time: pairs t0, v0, t1, v1, ... (times increasing; "
+                                    "linear between, clamped outside)")
+                   .when("Type", {kind}));
+  boundary.add(
+      KeySpec::file(value + " File", doc + " in time: CSV file with columns time (s), value (" +
+                                         unit + "), optional header line (relative to the deck)")
+          .when("Type", {kind}));
+  std::vector<std::string> group;
+  if (constant) group.push_back(value + " (" + unit + ")");
+  group.push_back(value + " Table");
+  group.push_back(value + " File");
+  boundary.exactlyOneOf(group, Condition{"Type", {kind}});
+}
+
+void addHydraulicBoundaryKeys(ListSchema& boundary) {
+  boundary.add(KeySpec::sublist("Zone", zoneKeys(),
+                                "where the condition applies on the CURRENT free boundary "
+                                "(instead of a side set)")
+                   .when("Type", kHydraulicKinds));
+  boundary.exactlyOneOf({"Side Set", "Zone"}, Condition{"Type", kHydraulicKinds});
+  addTimeSeriesKeys(boundary, "Total Head", "m", "total head",
+                    "total head H = y + p_L / (rho_L g) (Eq. 4.50), an elevation", true);
+  boundary.add(KeySpec::choice("Above Level", deckWords(kAboveLevelWords),
+                               "on the boundary above the current level: constant pressure, "
+                               "linear (hydrostatic) suction, or potential seepage face")
+                   .when("Type", {"total head"})
+                   .byDefault(std::string("constant pressure")));
+  boundary.add(KeySpec::real("Pressure Above Level (Pa)", "Pa",
+                             "p_L above the level with Above Level: constant pressure")
+                   .when("Above Level", {"constant pressure"})
+                   .byDefault(0.0));
+  boundary.add(KeySpec::real("Liquid Density (kg/m3)", "kg/m3",
+                             "rho_L converting head to pressure, p_L = rho_L g (H - y)")
+                   .above(0)
+                   .when("Type", {"total head"})
+                   .byDefault(1000.0));
+  addTimeSeriesKeys(boundary, "Pressure", "Pa", "pressure series",
+                    "prescribed p_L (compression positive)", false);
+  addTimeSeriesKeys(boundary, "Flux", "m/s", "infiltration",
+                    "infiltration flux q into the soil (rain positive, evaporation negative)",
+                    true);
+  boundary.add(KeySpec::boolean("Ponding",
+                                "rain the saturated surface cannot take ponds and is imposed "
+                                "anyway (true), or runs off at zero pressure (false)")
+                   .when("Type", {"infiltration"})
+                   .byDefault(false));
+}
+// ---------------------------------------------------------------- end hydraulic conditions
+
 ListSchema boundaryKeys() {
   ListSchema boundary;
   boundary.add(KeySpec::choice("Type", deckWords(kBoundaryWords),
@@ -271,7 +364,8 @@ ListSchema boundaryKeys() {
                    .when("Type", {"solid fixity", "impermeable"})
                    .requireWhen("Type", {"solid fixity"}));
   boundary.add(KeySpec::text("Side Set", "mesh side set")
-                   .when("Type", {"impermeable", "traction", "liquid pressure"})
+                   .when("Type", {"impermeable", "traction", "liquid pressure", "total head",
+                                  "pressure series", "infiltration", "seepage face"})
                    .requireWhen("Type", {"traction", "liquid pressure"}));
   boundary.exactlyOneOf({"Node Set", "Side Set"}, Condition{"Type", {"impermeable"}});
   boundary.add(
@@ -286,6 +380,7 @@ ListSchema boundaryKeys() {
   boundary.add(KeySpec::real("Pressure (Pa)", "Pa", "prescribed p_L (compression positive)")
                    .when("Type", {"liquid pressure"})
                    .require());
+  addHydraulicBoundaryKeys(boundary);
   return boundary;
 }
 

@@ -1,5 +1,6 @@
 #include "argine/simulation/Simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -88,6 +89,7 @@ RunSummary Simulation::run() {
       options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv",
       std::vector<std::string>{"time", "time_step", "kinetic_energy_solid", "kinetic_energy_liquid",
                                "liquid_mass", "lost_points"});
+  openBoundaryFluxLog();
   writeOutput();
 
   const double wall_start = wallSeconds();
@@ -130,6 +132,7 @@ void Simulation::runStage(const StageSpec& stage) {
     dt = choice.time_step;
     dt = std::min(dt, std::min(next_output, end) - solver_->time());
     solver_->step(dt);
+    accumulateBoundaryFluxes();
     ++summary_.steps;
     summary_.point_updates += points_.count;
     if (solver_->time() >= next_output - tolerance) {
@@ -162,6 +165,7 @@ void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choic
 void Simulation::writeOutput() {
   results_->write(solver_->time(), points_, toOutputFields(solver_->nodalFields()));
   writeDiagnostics();
+  writeBoundaryFluxes();
 }
 
 void Simulation::writeDiagnostics() {
@@ -169,6 +173,67 @@ void Simulation::writeDiagnostics() {
   diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
                           d.kinetic_energy_liquid, d.liquid_mass,
                           static_cast<Real>(d.lost_points)});
+}
+
+// ---------------------------------------------------------------- hydraulic boundary fluxes
+// <name>_boundary_flux.csv: at each output time, the liquid volume (m^3 per m thickness)
+// that entered the soil through each hydraulic condition in the last step and since the
+// start, the net inflow through all nodes, and the storage change of the points
+// (sum M_L - initial) / rho_L. Written only when some stage has hydraulic conditions.
+
+void Simulation::openBoundaryFluxLog() {
+  for (const auto& stage : deck_.stages)
+    for (const auto& boundary : stage.boundaries) {
+      const bool hydraulic = boundary.kind == BoundaryKind::TotalHead ||
+                             boundary.kind == BoundaryKind::PressureSeries ||
+                             boundary.kind == BoundaryKind::Infiltration ||
+                             boundary.kind == BoundaryKind::SeepageFace;
+      if (hydraulic &&
+          std::find(flux_names_.begin(), flux_names_.end(), boundary.name) == flux_names_.end())
+        flux_names_.push_back(boundary.name);
+    }
+  if (flux_names_.empty()) return;
+  flux_last_step_.assign(flux_names_.size(), 0.0);
+  flux_cumulative_.assign(flux_names_.size(), 0.0);
+  const auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points_.mass_liquid);
+  initial_liquid_mass_ = 0;
+  for (int p = 0; p < points_.count; ++p) initial_liquid_mass_ += mass(p);
+  std::vector<std::string> columns{"time", "storage_change", "net_inflow_all_nodes"};
+  for (const auto& name : flux_names_) {
+    columns.push_back(name + "_step");
+    columns.push_back(name + "_cumulative");
+  }
+  boundary_flux_ = std::make_unique<CsvWriter>(
+      options_.output_directory + "/" + deck_.output.name + "_boundary_flux.csv", columns);
+}
+
+void Simulation::accumulateBoundaryFluxes() {
+  if (!boundary_flux_) return;
+  std::fill(flux_last_step_.begin(), flux_last_step_.end(), 0.0);
+  const auto& conditions = solver_->hydraulicConditions().conditions();
+  const auto& volumes = solver_->boundaryFluxVolumes();
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const auto k = static_cast<std::size_t>(
+        std::find(flux_names_.begin(), flux_names_.end(), conditions[c].name) -
+        flux_names_.begin());
+    flux_last_step_[k] = volumes[c];
+    flux_cumulative_[k] += volumes[c];
+  }
+  if (!conditions.empty()) flux_all_nodes_cumulative_ += volumes[conditions.size()];
+}
+
+void Simulation::writeBoundaryFluxes() {
+  if (!boundary_flux_) return;
+  const Real mass =
+      solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass : initial_liquid_mass_;
+  std::vector<Real> row{solver_->time(),
+                        (mass - initial_liquid_mass_) / solver_->referenceLiquidDensity(),
+                        flux_all_nodes_cumulative_};
+  for (std::size_t k = 0; k < flux_names_.size(); ++k) {
+    row.push_back(flux_last_step_[k]);
+    row.push_back(flux_cumulative_[k]);
+  }
+  boundary_flux_->writeRow(row);
 }
 
 }  // namespace argine

@@ -88,7 +88,56 @@ enum class BoundaryKind {
   LiquidFixity,    ///< zero relative liquid velocity (impermeable) on a side or node set
   Traction,        ///< total traction vector on a side set (Pa)
   LiquidPressure,  ///< prescribed liquid pressure on a side set (Pa)
+  // Hydraulic conditions on the moving free boundary (thesis Sec. 4.1-4.3), see below.
+  TotalHead,       ///< total head H(t) (4.50) on a zone of the free boundary or a side set
+  PressureSeries,  ///< prescribed liquid pressure p(t) on a zone or a side set
+  Infiltration,    ///< prescribed infiltration flux q(t) (Sec. 4.2); negative: evaporation
+  SeepageFace,     ///< potential seepage face (Sec. 4.3)
 };
+
+// ---------------------------------------------------------------- hydraulic conditions (P3)
+// Plain deck data of the conditions on the moving free boundary; resolved by the boundary
+// room (boundary/TimeSeries.hpp, boundary/Zone.hpp, boundary/HydraulicConditions.hpp).
+
+/// A region of the plane where a condition applies on the current free boundary.
+struct ZoneSpec {
+  enum class Kind { Everywhere, HalfPlane, Box, PolylineBand } kind = Kind::Everywhere;
+  std::array<Real, 2> point{0.0, 0.0};        ///< half-plane: a point on its edge (m)
+  std::array<Real, 2> direction{0.0, 1.0};    ///< half-plane: pointing into the zone
+  std::array<Real, 2> lower_left{0.0, 0.0};   ///< box (m)
+  std::array<Real, 2> upper_right{0.0, 0.0};  ///< box (m)
+  std::vector<std::array<Real, 2>> vertices;  ///< polyline band (m)
+  Real width = 0;                             ///< polyline band half-width (m)
+};
+
+/// A time-dependent value as written in the deck: a constant, an inline table of pairs
+/// (t, v), or a CSV file; `where` is the key path for error messages.
+struct TimeSeriesSpec {
+  enum class Source { Constant, Table, File } source = Source::Constant;
+  Real value = 0;           ///< Constant (SI)
+  std::vector<Real> pairs;  ///< Table: t0, v0, t1, v1, ... (s, SI)
+  std::string file;         ///< File: absolute path of the two-column CSV
+  std::string where;        ///< deck key path of the value
+};
+
+/// What a total-head condition does on the free boundary above the current level (Sec. 4.1).
+enum class AboveLevel {
+  ConstantPressure,  ///< p_L = Pressure Above Level (Pa), default 0
+  LinearSuction,     ///< p_L = rho_L g (H - y) < 0: hydrostatic suction
+  SeepageFace,       ///< potential seepage face (Sec. 4.3)
+};
+
+/// Parameters of the hydraulic kinds (TotalHead, PressureSeries, Infiltration, SeepageFace).
+struct HydraulicSpec {
+  bool on_zone = false;  ///< true: the zone on the free boundary; false: BoundarySpec::side_set
+  ZoneSpec zone;
+  TimeSeriesSpec series;  ///< head (m), pressure (Pa) or flux (m/s, infiltration positive)
+  AboveLevel above = AboveLevel::ConstantPressure;
+  Real pressure_above = 0;  ///< (Pa) for AboveLevel::ConstantPressure
+  bool ponding = false;     ///< infiltration: rain that cannot infiltrate ponds (true) or runs off
+  Real liquid_density = 1000;  ///< rho_L of the head-pressure conversion (kg/m^3)
+};
+// ---------------------------------------------------------------- end hydraulic conditions
 
 struct BoundarySpec {
   std::string name;
@@ -99,6 +148,7 @@ struct BoundarySpec {
   bool fix_y = false;
   std::array<Real, 2> traction{0.0, 0.0};  ///< (Pa), tension positive along the outward normal
   Real pressure = 0;                       ///< prescribed p_L (Pa, compression positive)
+  HydraulicSpec hydraulic;                 ///< TotalHead, PressureSeries, Infiltration, ...
 };
 
 struct StageSpec {

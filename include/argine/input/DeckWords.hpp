@@ -70,10 +70,23 @@ inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
 };
 
 inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
-    {"solid fixity", BoundaryKind::SolidFixity},
-    {"impermeable", BoundaryKind::LiquidFixity},
-    {"traction", BoundaryKind::Traction},
-    {"liquid pressure", BoundaryKind::LiquidPressure},
+    {"solid fixity", BoundaryKind::SolidFixity},  {"impermeable", BoundaryKind::LiquidFixity},
+    {"traction", BoundaryKind::Traction},         {"liquid pressure", BoundaryKind::LiquidPressure},
+    {"total head", BoundaryKind::TotalHead},      {"pressure series", BoundaryKind::PressureSeries},
+    {"infiltration", BoundaryKind::Infiltration}, {"seepage face", BoundaryKind::SeepageFace},
+};
+
+inline constexpr DeckWord<ZoneSpec::Kind> kZoneWords[] = {
+    {"everywhere", ZoneSpec::Kind::Everywhere},
+    {"half-plane", ZoneSpec::Kind::HalfPlane},
+    {"box", ZoneSpec::Kind::Box},
+    {"polyline band", ZoneSpec::Kind::PolylineBand},
+};
+
+inline constexpr DeckWord<AboveLevel> kAboveLevelWords[] = {
+    {"constant pressure", AboveLevel::ConstantPressure},
+    {"linear suction", AboveLevel::LinearSuction},
+    {"seepage face", AboveLevel::SeepageFace},
 };
 
 inline constexpr DeckWord<ElementType> kElementWords[] = {

@@ -58,6 +58,10 @@ class Simulation {
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   void writeOutput();
   void writeDiagnostics();
+  // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
+  void openBoundaryFluxLog();
+  void accumulateBoundaryFluxes();
+  void writeBoundaryFluxes();
 
   Deck deck_;
   RunOptions options_;
@@ -67,6 +71,12 @@ class Simulation {
   std::unique_ptr<ResultsWriter> results_;
   std::unique_ptr<CsvWriter> diagnostics_;
   std::unique_ptr<ProgressReporter> progress_;
+  std::unique_ptr<CsvWriter> boundary_flux_;  ///< only when a stage has hydraulic conditions
+  std::vector<std::string> flux_names_;       ///< hydraulic conditions of all stages
+  std::vector<Real> flux_last_step_;          ///< m^3/m through each, last step
+  std::vector<Real> flux_cumulative_;         ///< m^3/m through each since the start
+  Real flux_all_nodes_cumulative_ = 0;        ///< net inflow through all nodes (m^3/m)
+  Real initial_liquid_mass_ = 0;              ///< sum of the points' M_L at the start (kg/m)
   RunSummary summary_;
 };
 
