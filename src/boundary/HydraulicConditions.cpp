@@ -1,6 +1,7 @@
 #include "argine/boundary/HydraulicConditions.hpp"
 
 #include <array>
+#include <cmath>
 #include <map>
 
 #include "argine/core/Error.hpp"
@@ -86,17 +87,31 @@ std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& con
 }
 
 void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
-  std::map<int, std::array<Real, kDim>> forces;     // node -> force (same on liquid and mixture)
-  std::map<int, std::pair<int, Real>> corrections;  // node -> (kind, q_out)
-  std::map<int, int> owner;                         // node -> condition
+  std::map<int, std::array<Real, kDim>> forces;  // node -> force (same on liquid and mixture)
+  struct Claim {
+    int kind = 0;
+    Real q_out = 0;
+    int condition = 0;
+  };
+  std::map<int, Claim> corrections;  // node -> the first condition correcting it
+  std::map<int, int> owner;          // node -> condition
+  std::map<std::pair<int, int>, std::array<Real, kDim>> face;  // (condition, node) -> sum n L/2
   for (std::size_t c = 0; c < conditions_.size(); ++c) {
     const HydraulicCondition& condition = conditions_[c];
+    const int index = static_cast<int>(c);
     const std::vector<FreeSide> sides = sidesOf(condition, boundary);
     sides_used_[c] = sides;
     const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
     current_values_[c] = value;
+    auto claim = [&](int node, FluxCorrection kind, Real q_out) {
+      corrections.emplace(node, Claim{static_cast<int>(kind), q_out, index});
+    };
     for (const FreeSide& side : sides) {
-      for (const int node : {side.a, side.b}) owner.emplace(node, static_cast<int>(c));
+      for (const int node : {side.a, side.b}) {
+        owner.emplace(node, index);
+        auto& sum = face[{index, node}];
+        for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
+      }
       Real fa[kDim] = {0, 0}, fb[kDim] = {0, 0};
       switch (condition.kind) {
         case BoundaryKind::TotalHead: {
@@ -107,8 +122,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           rule.pressure_above = condition.pressure_above;
           headSideForces(side.xa, side.xb, side.length, side.normal, rule, fa, fb);
           if (condition.above == AboveLevel::SeepageFace) {  // nodes above the level
-            if (side.xa[1] > value) corrections.emplace(side.a, std::make_pair(2, 0.0));
-            if (side.xb[1] > value) corrections.emplace(side.b, std::make_pair(2, 0.0));
+            if (side.xa[1] > value) claim(side.a, FluxCorrection::SeepageFace, 0.0);
+            if (side.xb[1] > value) claim(side.b, FluxCorrection::SeepageFace, 0.0);
           }
           break;
         }
@@ -116,16 +131,13 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           pressureSideForces(value, value, side.length, side.normal, fa, fb);
           break;
         case BoundaryKind::Infiltration: {
-          const int kind = static_cast<int>(condition.ponding ? FluxCorrection::InfiltrationPonding
-                                                              : FluxCorrection::Infiltration);
-          for (const int node : {side.a, side.b})
-            corrections.emplace(node, std::make_pair(kind, -value));  // q_out = -q_in
+          const FluxCorrection kind = condition.ponding ? FluxCorrection::InfiltrationPonding
+                                                        : FluxCorrection::Infiltration;
+          for (const int node : {side.a, side.b}) claim(node, kind, -value);  // q_out = -q_in
           break;
         }
         case BoundaryKind::SeepageFace:
-          for (const int node : {side.a, side.b})
-            corrections.emplace(node,
-                                std::make_pair(static_cast<int>(FluxCorrection::SeepageFace), 0.0));
+          for (const int node : {side.a, side.b}) claim(node, FluxCorrection::SeepageFace, 0.0);
           break;
         default:
           break;
@@ -166,16 +178,26 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   }
 
   std::vector<int> c_node, c_kind;
-  std::vector<Real> c_q;
+  std::vector<Real> c_q, c_normal;
   for (const auto& [node, entry] : corrections) {
     c_node.push_back(node);
-    c_kind.push_back(entry.first);
-    c_q.push_back(entry.second);
+    c_kind.push_back(entry.kind);
+    c_q.push_back(entry.q_out);
+    const auto& sum = face[{entry.condition, node}];
+    const Real length = std::hypot(sum[0], sum[1]);
+    for (int d = 0; d < kDim; ++d) c_normal.push_back(length > 0 ? sum[d] / length : 0);
   }
   corrections_.node = toDevice(c_node, "correction_node");
   corrections_.kind = toDevice(c_kind, "correction_kind");
   corrections_.q_out = toDevice(c_q, "correction_q_out");
   corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
+  corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());
+  {
+    auto normal = Kokkos::create_mirror_view(corrections_.normal);
+    for (std::size_t j = 0; j < c_node.size(); ++j)
+      for (int d = 0; d < kDim; ++d) normal(j, d) = c_normal[kDim * j + d];
+    Kokkos::deep_copy(corrections_.normal, normal);
+  }
 
   std::vector<int> o_node, o_owner;
   for (const auto& [node, c] : owner) {

@@ -133,7 +133,7 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
   const auto kind = corrections.kind;
   const auto q_out = corrections.q_out;
   const auto applied = corrections.applied;
-  const auto gradient_i = fields.mass_gradient_i;
+  const auto normal_j = corrections.normal;
   const auto wet_i = fields.wet_volume_i;
   const GridFields g = grid;
   Kokkos::parallel_for(
@@ -142,9 +142,7 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
         const int i = node(j);
         applied(j) = 0;
         const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
-        const Real gradient[kDim] = {gradient_i(i, 0), gradient_i(i, 1)};
-        Real normal[kDim];
-        outwardNormalOfMassGradient(gradient, normal);  // 4.51
+        const Real normal[kDim] = {normal_j(j, 0), normal_j(j, 1)};
         if (!(n_liquid > 0) || (normal[0] == 0 && normal[1] == 0)) return;
         Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
         for (int d = 0; d < kDim; ++d) {  // Sec. 4.2 step 2: the prediction
@@ -168,7 +166,7 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
   const auto node = corrections.node;
   const auto q_out = corrections.q_out;
   const auto applied = corrections.applied;
-  const auto gradient_i = fields.mass_gradient_i;
+  const auto normal_j = corrections.normal;
   const auto wet_i = fields.wet_volume_i;
   const GridFields g = grid;
   Kokkos::parallel_for(
@@ -177,9 +175,7 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
         if (!applied(j)) return;
         const int i = node(j);
         const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
-        const Real gradient[kDim] = {gradient_i(i, 0), gradient_i(i, 1)};
-        Real normal[kDim];
-        outwardNormalOfMassGradient(gradient, normal);
+        const Real normal[kDim] = {normal_j(j, 0), normal_j(j, 1)};
         Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
         for (int d = 0; d < kDim; ++d) {
           vl[d] = g.velocity_liquid_i(i, d);

@@ -45,9 +45,12 @@ TimeSeries makeTimeSeries(const TimeSeriesSpec& spec);
 
 /// Device lists of one step's nodal corrections (see HydraulicAlgebra: FluxCorrection).
 struct FluxCorrectionList {
-  Kokkos::View<int*, MemSpace> node;     ///< mesh node
-  Kokkos::View<int*, MemSpace> kind;     ///< FluxCorrection as int
-  Kokkos::View<Real*, MemSpace> q_out;   ///< prescribed outward relative flux w^ . n (m/s)
+  Kokkos::View<int*, MemSpace> node;    ///< mesh node
+  Kokkos::View<int*, MemSpace> kind;    ///< FluxCorrection as int
+  Kokkos::View<Real*, MemSpace> q_out;  ///< prescribed outward relative flux w^ . n (m/s)
+  /// Outward unit normal of the correcting condition's own sides at the node: the sum of
+  /// n L / 2 over them, normalised (HydraulicBoundaryStep.hpp says why not 4.51 here).
+  Kokkos::View<Real* [kDim], MemSpace> normal;
   Kokkos::View<int*, MemSpace> applied;  ///< 1 where the correction applied this step
   int count() const { return static_cast<int>(node.extent(0)); }
 };

@@ -22,6 +22,15 @@
 /// (the content-weighted form of the unnormalised 4.51 vector). G_i vanishes at nodes whose
 /// support is filled with soil (exactly for Tri3 with full elements), so the sum is the flux
 /// through the boundary; the sum over the nodes a condition owns is its share.
+///
+/// Normals. mapBoundaryGradients computes the mass-gradient normal (4.51) at every node;
+/// the corrections use instead the normal of the correcting condition's OWN sides at the
+/// node (sum of n L / 2, normalised; FluxCorrectionList::normal). The two agree on a smooth
+/// surface, but at a corner where the condition covers one face only (the top corners of a
+/// column with sealed sides) 4.51 is diagonal, and correcting only the component of w along
+/// it leaves the tangential part, which crosses the face: a rain column measured 1000 x the
+/// rain through its top with 4.51. The node's flux is w . G_i, and for the condition's face
+/// G_i is parallel to its side normals, so correcting along them controls it exactly.
 
 #include <vector>
 
