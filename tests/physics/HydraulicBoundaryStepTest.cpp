@@ -210,3 +210,75 @@ TEST(HydraulicStep, CorrectionKernelKeepsTheMixtureMomentum) {
 
 }  // namespace
 }  // namespace argine
+
+namespace argine {
+namespace {
+
+TEST(HydraulicStep, HeadLoadFollowsADeformingSlope) {
+  // A soft saturated staircase slope on a 6 x 4 background of 0.5 m quads (soil in cells
+  // with i >= j, i.e. a 45 degree staircase rising to the right, the right part 2 m high),
+  // fixed base, under a river of H = 1.2 m on its left (zone x < 2 m, above y = 0.01 so the
+  // fixed base gets no uplift). The soil is soft and settles: points change element, the
+  // free boundary is detected again and the load sits on the CURRENT free sides, every step:
+  //  - every loaded node is a node of a free side of the zone;
+  //  - the horizontal resultant is the hydrostatic thrust on the vertical risers below H,
+  //    1/2 rho g H^2 = 0.5 x 1000 x 9.81 x 1.2^2 = 7063.2 N/m, while the staircase is
+  //    monotone (the vertical risers cover 0 < y < H once).
+  Mesh mesh = test::rectangleMesh(6, 4, 3.0, 2.0, ElementType::Quad4);
+  MaterialPoints points = test::seedUniform(mesh, 0, [](int e) { return e % 6 >= e / 6; });
+  std::vector<MaterialSpec> materials = {
+      test::elasticMaterial("mud", PhaseModel::Saturated, 3e4, 0.3, 0.4, 1e-3, 2e6)};
+  initialisePointState(materials, points);
+  ExplicitTwoPhaseSolver solver(mesh, points, materials);
+  BoundarySpec river;
+  river.name = "river";
+  river.kind = BoundaryKind::TotalHead;
+  river.hydraulic.on_zone = true;
+  river.hydraulic.zone.kind = ZoneSpec::Kind::Box;
+  river.hydraulic.zone.lower_left = {-1, 0.01};
+  river.hydraulic.zone.upper_right = {2.0, 10};
+  river.hydraulic.series = {};
+  river.hydraulic.series.value = 1.2;
+  StageSpec stage = test::makeStage(
+      "flood", SolverKind::Explicit, 9.81, 0.05,
+      {test::solidFixity("base", "bottom", true, true), test::impermeable("seal", "bottom"), river},
+      {CriterionKind::CflUndrained, CriterionKind::Mieremet});
+  stage.mass_scaling = 1;
+  solver.beginStage(stage);
+  const Real thrust = 0.5 * 1000 * 9.81 * 1.2 * 1.2;
+  int checked = 0;
+  std::vector<int> first_sides;
+  bool surface_moved = false;
+  test::runUntil(solver, 1.0, [&] {
+    const HydraulicConditions& h = solver.hydraulicConditions();
+    const FreeBoundary& boundary = solver.freeBoundary();
+    const auto node = hostCopy(h.loads().node);
+    const auto force = hostCopy(h.loads().liquid);
+    Real fx = 0;
+    for (int j = 0; j < h.loads().count(); ++j) {
+      fx += force(j, 0);
+      bool on_side = false;
+      for (const FreeSide& side : h.sidesUsed()[0])
+        on_side = on_side || side.a == node(j) || side.b == node(j);
+      ASSERT_TRUE(on_side) << "loaded node " << node(j) << " is not on a free side of the zone";
+    }
+    for (const FreeSide& side : h.sidesUsed()[0]) {
+      EXPECT_LE(side.midpoint(0), 2.0);
+      EXPECT_GE(side.midpoint(1), 0.01);
+      EXPECT_TRUE(boundary.isActive(side.element));
+    }
+    std::vector<int> elements;
+    for (const FreeSide& side : h.sidesUsed()[0]) elements.push_back(side.element);
+    if (first_sides.empty()) first_sides = elements;
+    surface_moved = surface_moved || elements != first_sides;
+    EXPECT_NEAR(fx, thrust, 1e-9 * thrust);
+    ++checked;
+  });
+  std::printf("[ slope ] %d steps, %ld free-boundary detections, surface moved: %s\n", checked,
+              solver.freeBoundary().detections(), surface_moved ? "yes" : "no");
+  EXPECT_GT(solver.freeBoundary().detections(), 1);
+  EXPECT_TRUE(surface_moved);
+}
+
+}  // namespace
+}  // namespace argine
