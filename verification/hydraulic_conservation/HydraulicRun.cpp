@@ -22,11 +22,12 @@ Real liquidMass(const MaterialPoints& points) {
   return sum;
 }
 
-HydraulicRun::HydraulicRun(const Deck& deck) : deck_(deck) {
+HydraulicRun::HydraulicRun(const Deck& deck, const Initialiser& initialise) : deck_(deck) {
   const double start = now();
   mesh_ = loadMesh(deck_);
   points_ = seedPoints(deck_, mesh_);
   initialisePointState(deck_.materials, points_);
+  if (initialise) initialise(deck_.materials, points_);
   solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
   solver_->beginStage(deck_.stages.front());

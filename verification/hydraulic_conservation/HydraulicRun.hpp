@@ -5,6 +5,7 @@
 /// through each hydraulic condition summed over every step (what Simulation writes into
 /// <name>_boundary_flux.csv), next to the storage change of the points.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -19,8 +20,11 @@ namespace argine::verification {
 
 class HydraulicRun {
  public:
-  /// Loads the mesh, seeds and initialises the points, begins the first stage.
-  explicit HydraulicRun(const Deck& deck);
+  /// Sets up the points after initialisePointState (e.g. a hydrostatic p_L profile).
+  using Initialiser = std::function<void(const std::vector<MaterialSpec>&, MaterialPoints&)>;
+  /// Loads the mesh, seeds and initialises the points (then `initialise`, if given), begins
+  /// the first stage.
+  explicit HydraulicRun(const Deck& deck, const Initialiser& initialise = nullptr);
   HydraulicRun(const HydraulicRun&) = delete;
   HydraulicRun& operator=(const HydraulicRun&) = delete;
   ~HydraulicRun();
