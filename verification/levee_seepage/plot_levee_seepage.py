@@ -62,7 +62,7 @@ def main():
     for ax, t in zip(axes, times):
         rows = [q for q in field if q["time"] == t]
         tri = mtri.Triangulation([q["x"] for q in rows], [q["y"] for q in rows])
-        c = ax.tricontourf(tri, [q["saturation"] for q in rows], levels=[0.1 + 0.1 * k for k in range(10)])
+        c = ax.tricontourf(tri, [q["saturation"] for q in rows], levels=[0.1 + 0.1 * k for k in range(10)] + [1.0001])
         ax.plot(*zip(*OUTLINE), "k-", lw=1)
         h = level.get(round(t, 6))
         if h is not None:
