@@ -16,13 +16,15 @@ bool isHydraulic(BoundaryKind kind) {
          kind == BoundaryKind::Infiltration || kind == BoundaryKind::SeepageFace;
 }
 
+/// Copies `values` into `view`, reallocating only when the length changed (plan() runs
+/// every step; the lists keep their length while the boundary does not change).
 template <class T>
-Kokkos::View<T*, MemSpace> toDevice(const std::vector<T>& values, const char* label) {
-  Kokkos::View<T*, MemSpace> view(std::string(label), values.size());
+void toDevice(const std::vector<T>& values, const char* label, Kokkos::View<T*, MemSpace>& view) {
+  if (view.extent(0) != values.size() || !view.data())
+    view = Kokkos::View<T*, MemSpace>(std::string(label), values.size());
   auto host = Kokkos::create_mirror_view(view);
   for (std::size_t k = 0; k < values.size(); ++k) host(k) = values[k];
   Kokkos::deep_copy(view, host);
-  return view;
 }
 
 }  // namespace
@@ -187,11 +189,14 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     const Real length = std::hypot(sum[0], sum[1]);
     for (int d = 0; d < kDim; ++d) c_normal.push_back(length > 0 ? sum[d] / length : 0);
   }
-  corrections_.node = toDevice(c_node, "correction_node");
-  corrections_.kind = toDevice(c_kind, "correction_kind");
-  corrections_.q_out = toDevice(c_q, "correction_q_out");
-  corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
-  corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());
+  const bool resized = corrections_.count() != static_cast<int>(c_node.size());
+  toDevice(c_node, "correction_node", corrections_.node);
+  toDevice(c_kind, "correction_kind", corrections_.kind);
+  toDevice(c_q, "correction_q_out", corrections_.q_out);
+  if (resized || !corrections_.applied.data()) {
+    corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
+    corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());
+  }
   {
     auto normal = Kokkos::create_mirror_view(corrections_.normal);
     for (std::size_t j = 0; j < c_node.size(); ++j)
@@ -204,8 +209,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     o_node.push_back(node);
     o_owner.push_back(c);
   }
-  ownership_.node = toDevice(o_node, "owned_node");
-  ownership_.owner = toDevice(o_owner, "owner");
+  toDevice(o_node, "owned_node", ownership_.node);
+  toDevice(o_owner, "owner", ownership_.owner);
 }
 
 }  // namespace argine

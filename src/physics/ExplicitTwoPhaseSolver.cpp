@@ -179,6 +179,9 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
   if (hydraulic_.empty()) return;
   argine::correctHydraulicAccelerations(hydraulic_.corrections(), boundary_fields_, dt,
                                         !momentum_.fixed_skeleton, grid_);
+  // Fixities and impermeable directions win over the correction at a node that has both:
+  // the fixity's reaction takes the solid part, the impermeable lock the liquid part.
+  applyAccelerationBoundaryConditions();
 }
 
 void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
@@ -211,10 +214,10 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
   computeNodalVelocities(nodes_in_use_, grid_);
-  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
   if (!hydraulic_.empty())  // the relative flux of the mass balance is the prescribed one
     correctHydraulicVelocities(hydraulic_.corrections(), boundary_fields_,
                                !momentum_.fixed_skeleton, grid_);
+  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
