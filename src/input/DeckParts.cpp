@@ -231,6 +231,7 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.time_step = parseTimeStep(stage.section("Time Step"));
   for (const auto& boundary : stage.entries("Boundary Conditions"))
     spec.boundaries.push_back(parseBoundary(boundary));
+  parseStageAdditions(stage, spec);  // issue P4
   return spec;
 }
 

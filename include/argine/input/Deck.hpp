@@ -105,19 +105,20 @@ struct BoundarySpec {
 // ---- stages: relaxation and material changes (issue P4) ----
 
 /// Ends a stage early once it is quasi-static: the largest kinetic energy over the last
-/// `window_steps` steps, divided by the largest kinetic energy since the stage started, is
-/// below `kinetic_energy_ratio`. The window keeps an oscillation's turning point (kinetic
-/// energy momentarily ~0) from passing for rest. Duration stays the maximum.
+/// `window` seconds, divided by the stored elastic energy, is below
+/// `kinetic_energy_ratio` (simulation/RelaxationMonitor.hpp). The window keeps an
+/// oscillation's turning point (kinetic energy momentarily ~0) from passing for rest.
+/// Duration stays the maximum.
 struct RelaxationSpec {
   bool enabled = false;
   Real kinetic_energy_ratio = 1e-4;  ///< tolerance (-)
-  int window_steps = 100;            ///< steps the ratio must stay low
+  Real window = 0.1;                 ///< (s) time the ratio must stay low
 };
 
 /// New values of some parameters of one material, applied when the stage starts (e.g. the
 /// cohesion falling from 20 to 2 kPa). Unset values keep the material's current ones.
 struct MaterialChangeSpec {
-  std::string material;  ///< material name (Materials/<name>)
+  std::string material;                        ///< material name (Materials/<name>)
   std::optional<Real> youngs_modulus;          ///< (Pa)
   std::optional<Real> poisson_ratio;           ///< (-)
   std::optional<Real> cohesion;                ///< (Pa)
@@ -141,7 +142,7 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
-  RelaxationSpec relaxation;                        ///< optional early end (issue P4)
+  RelaxationSpec relaxation;                         ///< optional early end (issue P4)
   std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
 };
 

@@ -103,6 +103,18 @@ inline constexpr DeckWord<bool> kTimeStepModeWords[] = {
     {"fixed", false},
 };
 
+// ---- issue P4: initialisation and probes ----
+inline constexpr DeckWord<InitialisationSpec::Method> kInitialisationWords[] = {
+    {"uniform", InitialisationSpec::Method::Uniform},
+    {"K0 procedure", InitialisationSpec::Method::K0Procedure},
+};
+
+inline constexpr DeckWord<SectionProbeSpec::Kind> kSectionWords[] = {
+    {"band", SectionProbeSpec::Kind::Band},
+    {"profile", SectionProbeSpec::Kind::Profile},
+};
+// ---- end of issue P4 words ----
+
 /// All words of a table, in table order (for the schema and messages).
 template <class Enum, std::size_t N>
 std::vector<std::string> deckWords(const DeckWord<Enum> (&table)[N]) {
