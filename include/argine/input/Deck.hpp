@@ -67,6 +67,7 @@ struct MaterialSpec {
   RetentionSpec retention;
   ConductivitySpec conductivity;
   InitialStateSpec initial;
+  LockingMitigationSpec locking;  ///< anti-locking averaging (`Locking Mitigation`)
 };
 
 // ---------------------------------------------------------------- stages
