@@ -110,10 +110,45 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
   const auto materials_m = table.materials();
   const auto material_p = points.material;
   const auto volume_p = points.volume;
+  const auto element_p = points.element;
   const auto strain_increment_p = rates.strain_increment_p;
+  const auto divergence_p = rates.liquid_divergence_increment_p;
+  const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
   const auto value_p = value_point_;
   const auto weight_p = weight_point_;
   const auto mode_p = mode_point_;
+  // The liquid terms first, at liquid-carrying points: the relative divergence dt div(v_L -
+  // v_S) and the flux divergence dt div(c w) get the same averaging as d eps_vol, so the
+  // pore pressure follows S (B u_L) with one smoothing operator S for both phases. (Smoothing
+  // the solid's volume change alone couples the phases through S - I in the liquid equation
+  // only: a non-symmetric coupling that the explicit step amplifies.)
+  auto averageLiquid = [&](bool relative) {
+    Kokkos::parallel_for(
+        "averaging_liquid_in", Kokkos::RangePolicy<ExecSpace>(0, count),
+        KOKKOS_LAMBDA(const int p) {
+          const PointMaterial& material = materials_m(material_p(p));
+          mode_p(p) = carriesLiquid(material.phase)
+                          ? static_cast<int>(material.locking.volumetric_strain)
+                          : kNone;
+          weight_p(p) = volume_p(p);
+          value_p(p) =
+              relative ? divergence_p(p) - (strain_increment_p(p, XX) + strain_increment_p(p, YY))
+                       : flux_divergence_p(p);
+        });
+    averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
+                       element_sums_, node_sums_);
+    Kokkos::parallel_for(
+        "averaging_liquid_out", Kokkos::RangePolicy<ExecSpace>(0, count),
+        KOKKOS_LAMBDA(const int p) {
+          if (mode_p(p) == kNone || element_p(p) < 0) return;
+          if (relative)
+            divergence_p(p) = value_p(p);  // the solid's d eps_vol is added below
+          else
+            flux_divergence_p(p) = value_p(p);
+        });
+  };
+  averageLiquid(false);
+  averageLiquid(true);
   Kokkos::parallel_for(
       "averaging_strain_in", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         mode_p(p) = static_cast<int>(materials_m(material_p(p)).locking.volumetric_strain);
@@ -122,17 +157,14 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
                      element_sums_, node_sums_);
-  const auto divergence_p = rates.liquid_divergence_increment_p;
-  const auto element_p = points.element;
   Kokkos::parallel_for(
       "averaging_strain_out", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         if (mode_p(p) == kNone || element_p(p) < 0) return;
         const Real shift = value_p(p) - (strain_increment_p(p, XX) + strain_increment_p(p, YY));
         strain_increment_p(p, XX) += shift / 2;
         strain_increment_p(p, YY) += shift / 2;
-        // The solid's divergence changed by `shift`: so does the liquid's, keeping the
-        // relative flux dt div(v_L - v_S) of the mass balance.
-        if (carriesLiquid(materials_m(material_p(p)).phase)) divergence_p(p) += shift;
+        // dt div v_L = averaged relative divergence + averaged d eps_vol.
+        if (carriesLiquid(materials_m(material_p(p)).phase)) divergence_p(p) += value_p(p);
       });
 }
 

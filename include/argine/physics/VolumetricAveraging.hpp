@@ -14,9 +14,12 @@
 ///
 /// Solid: q = d eps_vol = d eps_xx + d eps_yy (plane strain, d eps_zz = 0), w = V. The
 /// smoothed value is put back through d eps_xx and d eps_yy in equal parts (the in-plane
-/// deviatoric part and d eps_zz = 0 unchanged), and dt div v_L is shifted by the same amount,
-/// so the relative (Darcy) liquid flux of the mass balance is unchanged. Both weightings
-/// keep sum V d eps_vol, the volume change of the element (element) or of the body (nodal).
+/// deviatoric part and d eps_zz = 0 unchanged). At liquid-carrying points the relative
+/// divergence dt div(v_L - v_S) and the flux divergence dt div(c w) of the mass balance get the
+/// same averaging, so both phases see one smoothing operator (smoothing the solid alone gives
+/// a non-symmetric phase coupling that the explicit step amplifies). Both weightings keep
+/// sum V q, the change of the element (element) or of the body (nodal): volume and liquid
+/// mass are conserved.
 ///
 /// Liquid: q = d p_L of the step at saturated points, w = n V (pore volume); then rho_L from
 /// (4.13) and M_L = n rho_L V. sum n V d p_L is kept, so the liquid mass is kept to first
