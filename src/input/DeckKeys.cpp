@@ -84,10 +84,16 @@ ListSchema solidKeys() {
                 .below(90)
                 .when("Model", kMohrCoulombModels)
                 .byDefault(0.0));
-  solid.add(KeySpec::real("Tensile Strength (Pa)", "Pa", "tension cut-off")
+  solid.add(KeySpec::real("Tensile Strength (Pa)", "Pa",
+                          "tension cut-off: largest principal stress <= this (Tension Cut-Off)")
                 .atLeast(0)
                 .when("Model", kMohrCoulombModels)
                 .byDefault(0.0));
+  solid.add(KeySpec::boolean("Tension Cut-Off",
+                             "apply the tension cut-off at Tensile Strength (it binds only "
+                             "below the apex c cot phi)")
+                .when("Model", kMohrCoulombModels)
+                .byDefault(true));
   solid.add(KeySpec::real("Cohesion Increase Max (Pa)", "Pa",
                           "dc_max in c = c' + dc_max (1 - exp(-B s/p_atm)) (Eq. 4.25)")
                 .atLeast(0)
@@ -202,6 +208,23 @@ ListSchema initialStateKeys() {
   return initial;
 }
 
+// ---- Locking mitigation (volumetric averaging, physics/VolumetricAveraging.hpp)
+
+ListSchema lockingMitigationKeys() {
+  ListSchema locking;
+  locking.add(KeySpec::choice("Volumetric Strain Averaging", deckWords(kIncrementAveragingWords),
+                              "the volumetric strain increment of each point replaced by the "
+                              "volume-weighted average over the points of its element "
+                              "(element, MPM-MIXED) or mapped to the nodes and back (nodal "
+                              "mixed discretisation)")
+                  .byDefault(std::string("none")));
+  locking.add(KeySpec::choice("Liquid Pressure Averaging", deckWords(kIncrementAveragingWords),
+                              "the same averaging of the liquid pressure increment of "
+                              "saturated points")
+                  .byDefault(std::string("none")));
+  return locking;
+}
+
 ListSchema materialKeys() {
   ListSchema material;
   material.add(KeySpec::text("Block", "mesh element block filled with this material").require());
@@ -231,6 +254,8 @@ ListSchema materialKeys() {
                    .require());
   material.add(KeySpec::sublist("Initial State", initialStateKeys(),
                                 "state of the points before the first stage"));
+  material.add(KeySpec::sublist("Locking Mitigation", lockingMitigationKeys(),
+                                "volumetric-locking / cell-crossing mitigation"));
   return material;
 }
 

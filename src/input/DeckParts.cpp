@@ -58,6 +58,7 @@ SolidSpec parseSolid(const DeckSection& solid) {
   spec.friction_angle = radians(solid.real("Friction Angle (deg)"));
   spec.dilatancy_angle = radians(solid.real("Dilatancy Angle (deg)"));
   spec.tensile_strength = solid.real("Tensile Strength (Pa)");
+  spec.tension_cutoff = solid.boolean("Tension Cut-Off");
   if (spec.model == SolidModel::MohrCoulomb) return spec;
   spec.cohesion_increase_max = solid.real("Cohesion Increase Max (Pa)");
   spec.cohesion_suction_rate = solid.real("Cohesion Suction Rate B");
@@ -172,6 +173,16 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
   return spec;
 }
 
+// ---- Locking mitigation (volumetric averaging)
+LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
+  LockingMitigationSpec spec;
+  spec.volumetric_strain =
+      deckValue(kIncrementAveragingWords, locking.word("Volumetric Strain Averaging"));
+  spec.liquid_pressure =
+      deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
+  return spec;
+}
+
 }  // namespace
 
 MeshSpec parseMesh(const DeckSection& mesh) {
@@ -215,6 +226,7 @@ MaterialSpec parseMaterial(const DeckSection& material) {
   if (spec.phase == PhaseModel::Unsaturated)
     spec.retention = parseRetention(material.section("Retention"));
   spec.initial = parseInitialState(material.section("Initial State"), wet);
+  spec.locking = parseLockingMitigation(material.section("Locking Mitigation"));
   return spec;
 }
 

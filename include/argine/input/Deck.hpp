@@ -68,6 +68,7 @@ struct MaterialSpec {
   RetentionSpec retention;
   ConductivitySpec conductivity;
   InitialStateSpec initial;
+  LockingMitigationSpec locking;  ///< anti-locking averaging (`Locking Mitigation`)
 };
 
 // ---------------------------------------------------------------- stages

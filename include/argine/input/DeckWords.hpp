@@ -38,6 +38,12 @@ inline constexpr DeckWord<SolidModel> kSolidModelWords[] = {
     {"suction Mohr-Coulomb", SolidModel::SuctionMohrCoulomb},
 };
 
+inline constexpr DeckWord<IncrementAveraging> kIncrementAveragingWords[] = {
+    {"none", IncrementAveraging::None},
+    {"element", IncrementAveraging::Element},
+    {"nodal", IncrementAveraging::Nodal},
+};
+
 inline constexpr DeckWord<RetentionModel> kRetentionModelWords[] = {
     {"linear", RetentionModel::Linear},
     {"van Genuchten", RetentionModel::VanGenuchten},

@@ -11,13 +11,15 @@
 ///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11), and the remap of the
 ///                               new point momenta to the nodes, in one pass
 ///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs
-///   computeStrainIncrements     step 4: d eps, div v_L, advective term at the points
+///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
+///                               volumetric averaging of d eps if a material asks for it
 ///   updatePointStates           steps 5-7 in one pass over the points, per point:
 ///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
 ///     updateLiquidPressure      step 5: mass balance 4.12 (or 4.14), conservative form
 ///     updateEffectiveStress     step 5: sigma' (4.22), Bishop chi = S_L (4.5)
 ///     updateLiquidState         step 6: S_L (SWRC), k (HCC)
 ///     updatePointPosition       step 7: x += dt sum N v_S^{k+1} (7.13)
+///   (averaging of d p_L at saturated points if a material asks for it, VolumetricAveraging)
 ///   relocatePoints              step 8: grid discarded, points re-located for t^{k+1}
 ///   sortPoints                  every sortInterval() steps (if set): points by element
 ///   checkStability              non-finite values or runaway kinetic energy -> RunError
@@ -55,6 +57,7 @@
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/StepProfile.hpp"
 #include "argine/physics/TimeStepControl.hpp"
+#include "argine/physics/VolumetricAveraging.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/GridFields.hpp"
@@ -179,6 +182,7 @@ class ExplicitTwoPhaseSolver {
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)
   StageBoundaryConditions boundaries_;
+  VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   Real gravity_ = 0;
