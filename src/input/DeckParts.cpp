@@ -58,6 +58,7 @@ SolidSpec parseSolid(const DeckSection& solid) {
   spec.friction_angle = radians(solid.real("Friction Angle (deg)"));
   spec.dilatancy_angle = radians(solid.real("Dilatancy Angle (deg)"));
   spec.tensile_strength = solid.real("Tensile Strength (Pa)");
+  spec.tension_cutoff = solid.boolean("Tension Cut-Off");
   if (spec.model == SolidModel::MohrCoulomb) return spec;
   spec.cohesion_increase_max = solid.real("Cohesion Increase Max (Pa)");
   spec.cohesion_suction_rate = solid.real("Cohesion Suction Rate B");
@@ -263,6 +264,16 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
   return spec;
 }
 
+// ---- Locking mitigation (volumetric averaging)
+LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
+  LockingMitigationSpec spec;
+  spec.volumetric_strain =
+      deckValue(kIncrementAveragingWords, locking.word("Volumetric Strain Averaging"));
+  spec.liquid_pressure =
+      deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
+  return spec;
+}
+
 }  // namespace
 
 MeshSpec parseMesh(const DeckSection& mesh) {
@@ -306,6 +317,7 @@ MaterialSpec parseMaterial(const DeckSection& material) {
   if (spec.phase == PhaseModel::Unsaturated)
     spec.retention = parseRetention(material.section("Retention"));
   spec.initial = parseInitialState(material.section("Initial State"), wet);
+  spec.locking = parseLockingMitigation(material.section("Locking Mitigation"));
   return spec;
 }
 
@@ -322,6 +334,7 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.time_step = parseTimeStep(stage.section("Time Step"));
   for (const auto& boundary : stage.entries("Boundary Conditions"))
     spec.boundaries.push_back(parseBoundary(boundary));
+  parseStageAdditions(stage, spec);  // issue P4
   return spec;
 }
 

@@ -47,11 +47,13 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   rates_.allocate(points.count);
   evaluatePointShapes(mesh_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_);
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
 }
 
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
   checkMaterialsForExplicitSolver(materials);
   table_ = MaterialTable(materials);
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -222,10 +224,15 @@ void ExplicitTwoPhaseSolver::updateNodalVelocities() {
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
   interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
+  // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
+  averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
 }
 
 void ExplicitTwoPhaseSolver::updatePointStates() {
+  averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
   totals_ = argine::updatePointStates(table_, rates_, points_);
+  // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
+  averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {

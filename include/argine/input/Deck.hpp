@@ -6,6 +6,7 @@
 /// parameter lists, so nothing is looked up by name inside the time-step loop.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,7 @@ struct MaterialSpec {
   RetentionSpec retention;
   ConductivitySpec conductivity;
   InitialStateSpec initial;
+  LockingMitigationSpec locking;  ///< anti-locking averaging (`Locking Mitigation`)
 };
 
 // ---------------------------------------------------------------- stages
@@ -151,6 +153,35 @@ struct BoundarySpec {
   HydraulicSpec hydraulic;                 ///< TotalHead, PressureSeries, Infiltration, ...
 };
 
+// ---- stages: relaxation and material changes (issue P4) ----
+
+/// Ends a stage early once it is quasi-static: the largest kinetic energy over the last
+/// `window` seconds, divided by the stored elastic energy, is below
+/// `kinetic_energy_ratio` (simulation/RelaxationMonitor.hpp). The window keeps an
+/// oscillation's turning point (kinetic energy momentarily ~0) from passing for rest.
+/// Duration stays the maximum.
+struct RelaxationSpec {
+  bool enabled = false;
+  Real kinetic_energy_ratio = 1e-4;  ///< tolerance (-)
+  Real window = 0.1;                 ///< (s) time the ratio must stay low
+};
+
+/// New values of some parameters of one material, applied when the stage starts (e.g. the
+/// cohesion falling from 20 to 2 kPa). Unset values keep the material's current ones.
+struct MaterialChangeSpec {
+  std::string material;                        ///< material name (Materials/<name>)
+  std::optional<Real> youngs_modulus;          ///< (Pa)
+  std::optional<Real> poisson_ratio;           ///< (-)
+  std::optional<Real> cohesion;                ///< (Pa)
+  std::optional<Real> friction_angle;          ///< (rad)
+  std::optional<Real> dilatancy_angle;         ///< (rad)
+  std::optional<Real> tensile_strength;        ///< (Pa)
+  std::optional<Real> intrinsic_permeability;  ///< kappa (m2)
+  std::optional<Real> saturated_conductivity;  ///< k_sat (m/s)
+};
+
+// ---- end of issue P4 stage additions ----
+
 struct StageSpec {
   std::string name;
   SolverKind solver = SolverKind::Explicit;
@@ -162,6 +193,51 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
+  RelaxationSpec relaxation;                         ///< optional early end (issue P4)
+  std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
+};
+
+// ---------------------------------------------------------------- initialisation (P4)
+
+/// How the points' initial stress and liquid pressure are set before the first stage.
+///   Uniform: each material's Initial State (uniform p_L and sigma'_yy); gravity loading is
+///            this followed by a (quasi-static) stage with gravity.
+///   K0Procedure: thesis Ch. 4 Sec. 5.1 (Figs. 4.6-4.7): hydrostatic p_L under a phreatic
+///            surface (capped suction above it), sigma_yy from the unit weight of the layers
+///            between the ground surface and the point, Bishop sigma'_yy, sigma'_xx = K0
+///            sigma'_yy with each material's Initial State K0 (init/K0Procedure.hpp).
+struct InitialisationSpec {
+  enum class Method { Uniform, K0Procedure } method = Method::Uniform;
+  std::vector<std::array<Real, 2>> ground_surface;    ///< (x, y) vertices, x increasing (m)
+  std::vector<std::array<Real, 2>> phreatic_surface;  ///< (m); empty: each material's uniform p_L
+  Real max_suction = -1;                              ///< (Pa); < 0: no cap (Fig. 4.7 b)
+};
+
+// ---------------------------------------------------------------- probes (P4)
+
+/// A material point followed through the run: the point nearest to `position` at the start.
+struct PointProbeSpec {
+  std::string name;
+  std::array<Real, 2> position{0.0, 0.0};  ///< initial position sought (m)
+  Real tolerance = 0;                      ///< the nearest point must lie this close (m)
+};
+
+/// A line segment through the soil: either every point within `band_width`/2 of it (Band),
+/// or p_L and S_L interpolated at `samples` equidistant positions on it (Profile).
+struct SectionProbeSpec {
+  enum class Kind { Band, Profile } kind = Kind::Profile;
+  std::string name;
+  std::array<Real, 2> from{0.0, 0.0};  ///< (m)
+  std::array<Real, 2> to{0.0, 0.0};    ///< (m)
+  Real band_width = 0;                 ///< (m) band width; for a profile the averaging radius
+  int samples = 10;                    ///< Profile: number of sample positions
+};
+
+struct ProbesSpec {
+  Real interval = 0;  ///< (s) between probe rows; 0: at every output
+  std::vector<PointProbeSpec> points;
+  std::vector<SectionProbeSpec> sections;
+  bool empty() const { return points.empty() && sections.empty(); }
 };
 
 // ---------------------------------------------------------------- whole deck
@@ -178,6 +254,8 @@ struct Deck {
   std::vector<MaterialSpec> materials;
   std::vector<StageSpec> stages;  ///< in the order written in the deck
   OutputSpec output;
+  InitialisationSpec initialisation;  ///< (P4)
+  ProbesSpec probes;                  ///< (P4)
 };
 
 }  // namespace argine

@@ -17,7 +17,8 @@
 ///                               new point momenta to the nodes, in one pass
 ///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs, the
 ///                               infiltration / seepage corrections re-imposed
-///   computeStrainIncrements     step 4: d eps, div v_L, advective term at the points
+///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
+///                               volumetric averaging of d eps if a material asks for it
 ///   accountBoundaryFluxes       liquid volume through each hydraulic condition
 ///   updatePointStates           steps 5-7 in one pass over the points, per point:
 ///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
@@ -25,6 +26,7 @@
 ///     updateEffectiveStress     step 5: sigma' (4.22), Bishop chi = S_L (4.5)
 ///     updateLiquidState         step 6: S_L (SWRC), k (HCC)
 ///     updatePointPosition       step 7: x += dt sum N v_S^{k+1} (7.13)
+///   (averaging of d p_L at saturated points if a material asks for it, VolumetricAveraging)
 ///   relocatePoints              step 8: grid discarded, points re-located for t^{k+1}
 ///   sortPoints                  every sortInterval() steps (if set): points by element
 ///   checkStability              non-finite values or runaway kinetic energy -> RunError
@@ -65,6 +67,7 @@
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/StepProfile.hpp"
 #include "argine/physics/TimeStepControl.hpp"
+#include "argine/physics/VolumetricAveraging.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/GridFields.hpp"
@@ -214,6 +217,7 @@ class ExplicitTwoPhaseSolver {
   bool free_boundary_stale_ = true;  ///< a point changed element since the last detection
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
+  VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   Real gravity_ = 0;
