@@ -89,11 +89,11 @@ class Simulation {
   std::vector<Real> flux_cumulative_;         ///< m^3/m through each since the start
   Real flux_all_nodes_cumulative_ = 0;        ///< net inflow through all nodes (m^3/m)
   Real initial_liquid_mass_ = 0;              ///< sum of the points' M_L at the start (kg/m)
-  std::unique_ptr<ProbeWriter> probes_;  ///< (P4)
-  std::vector<std::string> stage_log_;   ///< (P4)
-  bool initial_output_written_ = false;  ///< (P4) t = 0 written after the first beginStage
-  Real next_probe_time_ = 0;             ///< (P4)
-  Real initial_time_step_ = 0;           ///< (P4) the first stage's first dt, for the t = 0 row
+  std::unique_ptr<ProbeWriter> probes_;       ///< (P4)
+  std::vector<std::string> stage_log_;        ///< (P4)
+  bool initial_output_written_ = false;       ///< (P4) t = 0 written after the first beginStage
+  Real next_probe_time_ = 0;                  ///< (P4)
+  Real initial_time_step_ = 0;  ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
 };
 
