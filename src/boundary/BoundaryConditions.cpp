@@ -283,6 +283,11 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
                                 integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));
         break;
       }
+      case BoundaryKind::TotalHead:  // on the moving boundary: HydraulicConditions
+      case BoundaryKind::PressureSeries:
+      case BoundaryKind::Infiltration:
+      case BoundaryKind::SeepageFace:
+        break;
     }
   }
   for (const auto& fixity : solid_fixities_) fixity.constrain(constraints_);
