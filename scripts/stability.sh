@@ -18,7 +18,7 @@ if [ "$sets" = quick ]; then  # a look at the subset: keep the committed results
 fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  "$root/scripts/build.sh"  # a fresh machine: install the packages, configure, build
 fi
 cmake --build "$build_dir" -j "$shards" --target argine_stability
 driver="$build_dir/verification/stability/argine_stability"
