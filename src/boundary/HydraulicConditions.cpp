@@ -92,7 +92,7 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   std::map<int, std::array<Real, kDim>> forces;  // node -> force (same on liquid and mixture)
   struct Claim {
     int kind = 0;
-    Real q_out = 0;
+    Real rain = 0;  ///< vertical inflow q (m/s), 0 for a seepage face
     int condition = 0;
   };
   std::map<int, Claim> corrections;  // node -> the first condition correcting it
@@ -105,8 +105,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     sides_used_[c] = sides;
     const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
     current_values_[c] = value;
-    auto claim = [&](int node, FluxCorrection kind, Real q_out) {
-      corrections.emplace(node, Claim{static_cast<int>(kind), q_out, index});
+    auto claim = [&](int node, FluxCorrection kind, Real rain) {
+      corrections.emplace(node, Claim{static_cast<int>(kind), rain, index});
     };
     for (const FreeSide& side : sides) {
       for (const int node : {side.a, side.b}) {
@@ -135,7 +135,7 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
         case BoundaryKind::Infiltration: {
           const FluxCorrection kind = condition.ponding ? FluxCorrection::InfiltrationPonding
                                                         : FluxCorrection::Infiltration;
-          for (const int node : {side.a, side.b}) claim(node, kind, -value);  // q_out = -q_in
+          for (const int node : {side.a, side.b}) claim(node, kind, value);
           break;
         }
         case BoundaryKind::SeepageFace:
@@ -180,19 +180,25 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   }
 
   std::vector<int> c_node, c_kind;
-  std::vector<Real> c_q, c_normal;
+  std::vector<Real> c_q, c_normal, c_length;
   for (const auto& [node, entry] : corrections) {
     c_node.push_back(node);
     c_kind.push_back(entry.kind);
-    c_q.push_back(entry.q_out);
     const auto& sum = face[{entry.condition, node}];
     const Real length = std::hypot(sum[0], sum[1]);
-    for (int d = 0; d < kDim; ++d) c_normal.push_back(length > 0 ? sum[d] / length : 0);
+    Real normal[kDim];
+    for (int d = 0; d < kDim; ++d) {
+      normal[d] = length > 0 ? sum[d] / length : 0;
+      c_normal.push_back(normal[d]);
+    }
+    c_q.push_back(verticalRainOutwardFlux(entry.rain, normal));
+    c_length.push_back(length);
   }
   const bool resized = corrections_.count() != static_cast<int>(c_node.size());
   toDevice(c_node, "correction_node", corrections_.node);
   toDevice(c_kind, "correction_kind", corrections_.kind);
   toDevice(c_q, "correction_q_out", corrections_.q_out);
+  toDevice(c_length, "correction_face_length", corrections_.face_length);
   if (resized || !corrections_.applied.data()) {
     corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
     corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());

@@ -8,7 +8,8 @@
 ///  - nodal loads: the pressure integrated along the condition's sides (HydraulicAlgebra),
 ///    added to BOTH the liquid (4.41) and the mixture (4.42) external forces, so the water
 ///    weight acts on the slope;
-///  - nodal corrections: infiltration (flux q_in = -q_out) and seepage-face nodes, corrected
+///  - nodal corrections: infiltration (vertical rain, q_out = -q n_y) and seepage-face nodes,
+///  corrected
 ///    by the predictor-corrector (4.53-4.59) in the solver;
 ///  - ownership: each node of a condition's sides belongs to the first condition (deck
 ///    order) that claims it, for the liquid volume each condition lets through.
@@ -51,6 +52,9 @@ struct FluxCorrectionList {
   /// Outward unit normal of the correcting condition's own sides at the node: the sum of
   /// n L / 2 over them, normalised (HydraulicBoundaryStep.hpp says why not 4.51 here).
   Kokkos::View<Real* [kDim], MemSpace> normal;
+  /// |sum of n L / 2| over the same sides (m): the node's share of the face, which passes
+  /// q_out times it (fluxWeightCorrection).
+  Kokkos::View<Real*, MemSpace> face_length;
   Kokkos::View<int*, MemSpace> applied;  ///< 1 where the correction applied this step
   int count() const { return static_cast<int>(node.extent(0)); }
 };
