@@ -4,8 +4,8 @@
 /// each, shared by the explicit solver's kernels and the unit tests:
 ///  - pressureOfHead: the total head (4.50) solved for the pressure;
 ///  - pressureSideForces / headSideForces: a pressure integrated along a straight side with
-///    the linear edge shape functions, f_a = -n int N_a p dL (the load on the liquid (4.41)
-///    and on the mixture (4.42));
+///    the linear edge shape functions, f_a = -n int N_a p dL (the load on the liquid (4.41);
+///    on the mixture (4.42) only its free-water part, mixtureLoadPressure);
 ///  - relativeFluxCorrection: the predictor-corrector of the infiltration (4.53-4.59) and
 ///    seepage-face conditions.
 /// Signs: p_L compression positive; n the OUTWARD unit normal; a flux q_out = w . n > 0
@@ -19,6 +19,19 @@ namespace argine {
 /// p_L = rho_L g (H - y): (4.50) with h_g = y and compression positive (Pa).
 KOKKOS_INLINE_FUNCTION Real pressureOfHead(Real rho_g, Real head, Real y) {
   return rho_g * (head - y);
+}
+
+/// The part of a prescribed liquid pressure p^ (Pa, compression positive) that loads the
+/// MIXTURE (4.42) as a total traction -p n: max(p^, 0). The mixture's boundary term is the
+/// total traction sigma n (4.35), set by what lies outside the soil: free water at p^ > 0
+/// (the surface is saturated, S_L = 1, and sigma n = -p^ n: the water weight of Sec. 4.1),
+/// or air at p = 0. A surface held at suction (p^ < 0) touches air: sigma n = 0, the
+/// suction acts on the pore liquid only (it loads f_L^ext (4.41) in full) and its reaction
+/// is in the skeleton (sigma' n = S_L p^ n by (4.5), compressive). Loading the mixture with
+/// -p^ n, or -S_L(p^) p^ n (sigma' n = 0), would pull the surface outwards and break the
+/// hydrostatic equilibrium of an unsaturated slope (sigma_yy = 0 at its surface).
+KOKKOS_INLINE_FUNCTION Real mixtureLoadPressure(Real prescribed_pressure) {
+  return prescribed_pressure > 0 ? prescribed_pressure : Real(0);
 }
 
 /// Adds to fa, fb (N per m thickness) the nodal forces of a pressure varying linearly from
@@ -49,6 +62,9 @@ struct HeadPressureRule {
   Real head = 0;      ///< H(t) (m)
   AboveLevel above = AboveLevel::ConstantPressure;
   Real pressure_above = 0;  ///< (Pa), AboveLevel::ConstantPressure
+  /// true: the mixture's load, each pressure through mixtureLoadPressure (the suction above
+  /// the level drops out); false: the liquid's load, the full pressure.
+  bool mixture = false;
   /// p_L below (or at) the level, and above it by the rule; the seepage face is a natural
   /// zero-pressure boundary (its correction is separate).
   Real below(Real y) const { return pressureOfHead(rho_g, head, y); }
@@ -75,8 +91,12 @@ inline void headSideForces(const Real xa[kDim], const Real xb[kDim], Real length
   auto piece = [&](Real s0, Real s1) {
     const Real y0 = ya + s0 * (yb - ya), y1 = ya + s1 * (yb - ya);
     const bool below = 0.5 * (y0 + y1) <= H;
-    const Real q0 = below ? rule.below(y0) : rule.aboveLevel(y0);
-    const Real q1 = below ? rule.below(y1) : rule.aboveLevel(y1);
+    Real q0 = below ? rule.below(y0) : rule.aboveLevel(y0);
+    Real q1 = below ? rule.below(y1) : rule.aboveLevel(y1);
+    if (rule.mixture) {  // exact: p has one sign on each piece (cut at the level)
+      q0 = mixtureLoadPressure(q0);
+      q1 = mixtureLoadPressure(q1);
+    }
     addPressurePieceForces(s0, s1, q0, q1, length, normal, fa, fb);
   };
   const bool crosses = (ya - H) * (yb - H) < 0;

@@ -6,8 +6,9 @@
 /// or on a mesh side set (sides of active elements only). Every step, plan() turns them
 /// into device lists for the solver's kernels:
 ///  - nodal loads: the pressure integrated along the condition's sides (HydraulicAlgebra),
-///    added to BOTH the liquid (4.41) and the mixture (4.42) external forces, so the water
-///    weight acts on the slope;
+///    added to the liquid (4.41) external force, and its free-water part (p^ > 0) to the
+///    mixture (4.42) external force, so the water weight acts on the slope; a suction above
+///    the level loads the liquid only (mixtureLoadPressure: sigma n = 0 against air);
 ///  - nodal corrections: infiltration (vertical rain, q_out = -q n_y) and seepage-face nodes,
 ///  corrected
 ///    by the predictor-corrector (4.53-4.59) in the solver;
