@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
 #include "argine/mesh/Mesh.hpp"
@@ -123,21 +124,22 @@ std::map<int, unsigned> locksOfNodeSet(const Mesh& mesh, const NodeSet& set, con
   return locks;
 }
 
-/// Integrates a constant traction vector (mixture) and/or pressure (liquid and mixture)
-/// over the sides of a side set with linear edge shape functions: each end node of a side
-/// gets the load times L / 2.
+/// Integrates a constant traction vector (mixture) and/or pressure over the sides of a side
+/// set with linear edge shape functions: each end node of a side gets the load times L / 2.
+/// The pressure loads the liquid in full (4.41) and the mixture with its free-water part
+/// mixtureLoadPressure(p) = max(p, 0) (4.42): a surface at suction touches air (sigma n = 0).
 NodalLoads integrateSideLoads(const SideSet& set, const HostMesh& host,
                               const std::array<Real, 2>& traction, Real pressure) {
   std::map<int, std::array<Real, 4>> sums;  // node -> mixture x, y, liquid x, y
   for (std::size_t k = 0; k < set.elements.size(); ++k) {
     const Side side = host.side(set.elements[k], set.sides[k]);
     const Real half = 0.5 * side.length;
+    const Real mixture_pressure = mixtureLoadPressure(pressure);
     for (const int node : {side.a, side.b}) {
       auto& f = sums[node];
       for (int d = 0; d < kDim; ++d) {
-        const Real pressure_force = -pressure * side.normal[d] * half;
-        f[d] += traction[d] * half + pressure_force;
-        f[2 + d] += pressure_force;
+        f[d] += (traction[d] - mixture_pressure * side.normal[d]) * half;
+        f[2 + d] += -pressure * side.normal[d] * half;
       }
     }
   }

@@ -89,10 +89,11 @@ std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& con
 }
 
 void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
-  std::map<int, std::array<Real, kDim>> forces;  // node -> force (same on liquid and mixture)
+  // node -> force on the liquid (full p^) and on the mixture (free water only: p^ > 0)
+  std::map<int, std::array<Real, 2 * kDim>> forces;
   struct Claim {
     int kind = 0;
-    Real q_out = 0;
+    Real rain = 0;  ///< vertical inflow q (m/s), 0 for a seepage face
     int condition = 0;
   };
   std::map<int, Claim> corrections;  // node -> the first condition correcting it
@@ -105,8 +106,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     sides_used_[c] = sides;
     const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
     current_values_[c] = value;
-    auto claim = [&](int node, FluxCorrection kind, Real q_out) {
-      corrections.emplace(node, Claim{static_cast<int>(kind), q_out, index});
+    auto claim = [&](int node, FluxCorrection kind, Real rain) {
+      corrections.emplace(node, Claim{static_cast<int>(kind), rain, index});
     };
     for (const FreeSide& side : sides) {
       for (const int node : {side.a, side.b}) {
@@ -114,7 +115,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
         auto& sum = face[{index, node}];
         for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
       }
-      Real fa[kDim] = {0, 0}, fb[kDim] = {0, 0};
+      Real fa[kDim] = {0, 0}, fb[kDim] = {0, 0};  // liquid
+      Real ma[kDim] = {0, 0}, mb[kDim] = {0, 0};  // mixture
       switch (condition.kind) {
         case BoundaryKind::TotalHead: {
           HeadPressureRule rule;
@@ -123,6 +125,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           rule.above = condition.above;
           rule.pressure_above = condition.pressure_above;
           headSideForces(side.xa, side.xb, side.length, side.normal, rule, fa, fb);
+          rule.mixture = true;
+          headSideForces(side.xa, side.xb, side.length, side.normal, rule, ma, mb);
           if (condition.above == AboveLevel::SeepageFace) {  // nodes above the level
             if (side.xa[1] > value) claim(side.a, FluxCorrection::SeepageFace, 0.0);
             if (side.xb[1] > value) claim(side.b, FluxCorrection::SeepageFace, 0.0);
@@ -131,11 +135,13 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
         }
         case BoundaryKind::PressureSeries:
           pressureSideForces(value, value, side.length, side.normal, fa, fb);
+          pressureSideForces(mixtureLoadPressure(value), mixtureLoadPressure(value), side.length,
+                             side.normal, ma, mb);
           break;
         case BoundaryKind::Infiltration: {
           const FluxCorrection kind = condition.ponding ? FluxCorrection::InfiltrationPonding
                                                         : FluxCorrection::Infiltration;
-          for (const int node : {side.a, side.b}) claim(node, kind, -value);  // q_out = -q_in
+          for (const int node : {side.a, side.b}) claim(node, kind, value);
           break;
         }
         case BoundaryKind::SeepageFace:
@@ -148,18 +154,19 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
         for (int d = 0; d < kDim; ++d) {
           forces[side.a][d] += fa[d];
           forces[side.b][d] += fb[d];
+          forces[side.a][kDim + d] += ma[d];
+          forces[side.b][kDim + d] += mb[d];
         }
       }
     }
   }
 
-  // loads: the same force on the liquid and the mixture
+  // loads: liquid and mixture
   std::vector<int> load_node;
-  std::vector<Real> load_force;
+  std::vector<std::array<Real, 2 * kDim>> load_force;
   for (const auto& [node, f] : forces) {
     load_node.push_back(node);
-    load_force.push_back(f[0]);
-    load_force.push_back(f[1]);
+    load_force.push_back(f);
   }
   const std::size_t n = load_node.size();
   if (loads_.count() != static_cast<int>(n)) {
@@ -170,29 +177,39 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   {
     auto node = Kokkos::create_mirror_view(loads_.node);
     auto mixture = Kokkos::create_mirror_view(loads_.mixture);
+    auto liquid = Kokkos::create_mirror_view(loads_.liquid);
     for (std::size_t j = 0; j < n; ++j) {
       node(j) = load_node[j];
-      for (int d = 0; d < kDim; ++d) mixture(j, d) = load_force[2 * j + d];
+      for (int d = 0; d < kDim; ++d) {
+        liquid(j, d) = load_force[j][d];
+        mixture(j, d) = load_force[j][kDim + d];
+      }
     }
     Kokkos::deep_copy(loads_.node, node);
     Kokkos::deep_copy(loads_.mixture, mixture);
-    Kokkos::deep_copy(loads_.liquid, mixture);
+    Kokkos::deep_copy(loads_.liquid, liquid);
   }
 
   std::vector<int> c_node, c_kind;
-  std::vector<Real> c_q, c_normal;
+  std::vector<Real> c_q, c_normal, c_length;
   for (const auto& [node, entry] : corrections) {
     c_node.push_back(node);
     c_kind.push_back(entry.kind);
-    c_q.push_back(entry.q_out);
     const auto& sum = face[{entry.condition, node}];
     const Real length = std::hypot(sum[0], sum[1]);
-    for (int d = 0; d < kDim; ++d) c_normal.push_back(length > 0 ? sum[d] / length : 0);
+    Real normal[kDim];
+    for (int d = 0; d < kDim; ++d) {
+      normal[d] = length > 0 ? sum[d] / length : 0;
+      c_normal.push_back(normal[d]);
+    }
+    c_q.push_back(verticalRainOutwardFlux(entry.rain, normal));
+    c_length.push_back(length);
   }
   const bool resized = corrections_.count() != static_cast<int>(c_node.size());
   toDevice(c_node, "correction_node", corrections_.node);
   toDevice(c_kind, "correction_kind", corrections_.kind);
   toDevice(c_q, "correction_q_out", corrections_.q_out);
+  toDevice(c_length, "correction_face_length", corrections_.face_length);
   if (resized || !corrections_.applied.data()) {
     corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
     corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());

@@ -180,7 +180,8 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
 void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
   if (hydraulic_.empty()) return;
   argine::correctHydraulicAccelerations(hydraulic_.corrections(), boundary_fields_, dt,
-                                        !momentum_.fixed_skeleton, grid_);
+                                        !momentum_.fixed_skeleton, reference_liquid_density_,
+                                        grid_);
   // Fixities and impermeable directions win over the correction at a node that has both:
   // the fixity's reaction takes the solid part, the impermeable lock the liquid part.
   applyAccelerationBoundaryConditions();
@@ -216,9 +217,13 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
   computeNodalVelocities(nodes_in_use_, grid_);
-  if (!hydraulic_.empty())  // the relative flux of the mass balance is the prescribed one
+  if (!hydraulic_.empty()) {  // the relative flux of the mass balance is the prescribed one
+    // constrained first, as the accelerations were: the correction measures the flux of the
+    // constrained velocities (a lock across the face normal would change it afterwards)
+    boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
     correctHydraulicVelocities(hydraulic_.corrections(), boundary_fields_,
-                               !momentum_.fixed_skeleton, grid_);
+                               !momentum_.fixed_skeleton, reference_liquid_density_, grid_);
+  }
   boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
 }
 

@@ -126,15 +126,38 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {
       });
 }
 
+namespace {
+
+/// The correction at node i of entry j: the flux-weight form, or the thesis form where the
+/// flux weight has no component along the normal. Returns q_net.
+KOKKOS_INLINE_FUNCTION Real nodeCorrection(const FluxCorrectionList& c, int j, int i,
+                                           const BoundaryGradientFields& fields,
+                                           const GridFields& g, Real density, bool solid_moves,
+                                           const Real vl[kDim], const Real vs[kDim], Real dvl[kDim],
+                                           Real dvs[kDim]) {
+  const Real normal[kDim] = {c.normal(j, 0), c.normal(j, 1)};
+  const Real weight[kDim] = {fields.flux_weight_i(i, 0), fields.flux_weight_i(i, 1)};
+  Real q_net = 0;
+  if (fluxWeightCorrection(weight, density, c.face_length(j), g.mass_liquid_i(i), g.mass_solid_i(i),
+                           solid_moves, normal, vl, vs, c.q_out(j), dvl, dvs, q_net))
+    return q_net;
+  const Real n_liquid = nodalLiquidFraction(fields.wet_volume_i(i), g.volume_liquid_i(i));
+  return relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i), solid_moves,
+                                normal, vl, vs, c.q_out(j), dvl, dvs);
+}
+
+}  // namespace
+
 void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
                                    const BoundaryGradientFields& fields, Real dt, bool solid_moves,
-                                   GridFields& grid) {
+                                   Real liquid_density, GridFields& grid) {
   const auto node = corrections.node;
   const auto kind = corrections.kind;
-  const auto q_out = corrections.q_out;
   const auto applied = corrections.applied;
   const auto normal_j = corrections.normal;
   const auto wet_i = fields.wet_volume_i;
+  const FluxCorrectionList list = corrections;
+  const BoundaryGradientFields f = fields;
   const GridFields g = grid;
   Kokkos::parallel_for(
       "correct_hydraulic_accelerations", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
@@ -149,8 +172,8 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
           vl[d] = g.velocity_liquid_i(i, d) + dt * g.acceleration_liquid_i(i, d);
           vs[d] = g.velocity_solid_i(i, d) + dt * g.acceleration_solid_i(i, d);
         }
-        const Real q_net = relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i),
-                                                  solid_moves, normal, vl, vs, q_out(j), dvl, dvs);
+        const Real q_net =
+            nodeCorrection(list, j, i, f, g, liquid_density, solid_moves, vl, vs, dvl, dvs);
         if (!correctionApplies(kind(j), q_net)) return;  // step 3: the switch
         applied(j) = 1;
         for (int d = 0; d < kDim; ++d) {  // step 5: corrected accelerations
@@ -162,27 +185,23 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
 
 void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 const BoundaryGradientFields& fields, bool solid_moves,
-                                GridFields& grid) {
+                                Real liquid_density, GridFields& grid) {
   const auto node = corrections.node;
-  const auto q_out = corrections.q_out;
   const auto applied = corrections.applied;
-  const auto normal_j = corrections.normal;
-  const auto wet_i = fields.wet_volume_i;
+  const FluxCorrectionList list = corrections;
+  const BoundaryGradientFields f = fields;
   const GridFields g = grid;
   Kokkos::parallel_for(
       "correct_hydraulic_velocities", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
       KOKKOS_LAMBDA(const int j) {
         if (!applied(j)) return;
         const int i = node(j);
-        const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
-        const Real normal[kDim] = {normal_j(j, 0), normal_j(j, 1)};
         Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
         for (int d = 0; d < kDim; ++d) {
           vl[d] = g.velocity_liquid_i(i, d);
           vs[d] = g.velocity_solid_i(i, d);
         }
-        relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i), solid_moves, normal,
-                               vl, vs, q_out(j), dvl, dvs);
+        nodeCorrection(list, j, i, f, g, liquid_density, solid_moves, vl, vs, dvl, dvs);
         for (int d = 0; d < kDim; ++d) {
           g.velocity_liquid_i(i, d) += dvl[d];
           g.velocity_solid_i(i, d) += dvs[d];

@@ -3,6 +3,7 @@
 
 #include "../transfer/TestScenes.hpp"
 #include "argine/boundary/BoundaryConditions.hpp"
+#include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/core/Error.hpp"
 
 namespace argine {
@@ -98,6 +99,28 @@ TEST(StageBoundaryConditions, LiquidPressureLoadsLiquidAndMixture) {
   // p^ = 0 (drained) is the natural condition: no load is made at all.
   const StageBoundaryConditions drained(mesh, stageWith({test::liquidPressure("top", "top", 0.0)}));
   EXPECT_TRUE(drained.liquidPressures().empty());
+}
+
+TEST(StageBoundaryConditions, SuctionLoadsTheLiquidOnly) {
+  // p^ = -1e4 Pa (suction) on the right side (n = +x) of the 1 x 2 mesh of 1 m elements.
+  // Liquid (4.41): -p^ n L / 2 = +5e3 at nodes 1 and 5, +1e4 at node 3 (x: pulled outward).
+  // Mixture (4.42): the total traction against air is 0 (mixtureLoadPressure(-1e4) = 0), so
+  // no mixture load; the full -p^ n would be the same +5e3 / +1e4, and Bishop's
+  // -S_L p^ n (sigma' n = 0) with S_L = 0.9 would be +4.5e3 / +9e3.
+  const Mesh mesh = test::rectangleMesh(1, 2, 1.0, 2.0, ElementType::Quad4);
+  const StageBoundaryConditions conditions(
+      mesh, stageWith({test::liquidPressure("dry face", "right", -1e4)}));
+  Kokkos::View<Real*[kDim], MemSpace> mixture, liquid;
+  loadsOn(mesh, conditions, mixture, liquid);
+  const auto f = hostCopy(mixture), fl = hostCopy(liquid);
+  EXPECT_DOUBLE_EQ(fl(1, 0), 5e3);
+  EXPECT_DOUBLE_EQ(fl(3, 0), 1e4);
+  EXPECT_DOUBLE_EQ(fl(5, 0), 5e3);
+  for (int i = 0; i < mesh.numNodes(); ++i)
+    for (int d = 0; d < kDim; ++d) EXPECT_EQ(f(i, d), 0.0) << "node " << i;
+  EXPECT_EQ(mixtureLoadPressure(-1e4), 0.0);
+  EXPECT_EQ(mixtureLoadPressure(2e4), 2e4);  // free water: the full load (S_L = 1)
+  EXPECT_EQ(mixtureLoadPressure(0.0), 0.0);
 }
 
 TEST(StageBoundaryConditions, LoadsSkipNodesWithoutMass) {

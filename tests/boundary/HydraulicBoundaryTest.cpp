@@ -212,6 +212,14 @@ TEST(HydraulicAlgebra, HeadOnASideCutByTheLevel) {
   headSideForces(xa, xb, 2.0, n, rule, sa, sb);
   EXPECT_NEAR(sa[0], 2e4 / 6, 1e-9);
   EXPECT_NEAR(sb[0], -2e4 / 6, 1e-9);
+  // the mixture's share of it: the suction above the level drops out (mixtureLoadPressure),
+  // leaving the hydrostatic part below, the same as with 0 above: fa, fb of the first case
+  rule.mixture = true;
+  Real ma[kDim] = {0, 0}, mb[kDim] = {0, 0};
+  headSideForces(xa, xb, 2.0, n, rule, ma, mb);
+  EXPECT_NEAR(ma[0], 2e4 * (0.5 - 0.375 + 1.0 / 12), 1e-9);
+  EXPECT_NEAR(mb[0], 2e4 * (0.125 - 1.0 / 12), 1e-9);
+  rule.mixture = false;
 
   // constant 500 Pa above: adds -n 500 int_1/2^1 (1-s) 2 ds = 500 x 2 x 1/8 = 125 to f_a and
   // 500 x 2 x 3/8 = 375 to f_b (in +x)
@@ -221,6 +229,17 @@ TEST(HydraulicAlgebra, HeadOnASideCutByTheLevel) {
   headSideForces(xa, xb, 2.0, n, rule, ca, cb);
   EXPECT_NEAR(ca[0] - fa[0], 125, 1e-9);
   EXPECT_NEAR(cb[0] - fb[0], 375, 1e-9);
+  // a constant SUCTION of 500 Pa above loads the liquid (-125, -375 relative to fa, fb) but
+  // not the mixture (its share is fa, fb)
+  rule.pressure_above = -500;
+  Real la[kDim] = {0, 0}, lb[kDim] = {0, 0}, xa2[kDim] = {0, 0}, xb2[kDim] = {0, 0};
+  headSideForces(xa, xb, 2.0, n, rule, la, lb);
+  rule.mixture = true;
+  headSideForces(xa, xb, 2.0, n, rule, xa2, xb2);
+  EXPECT_NEAR(la[0] - fa[0], -125, 1e-9);
+  EXPECT_NEAR(lb[0] - fb[0], -375, 1e-9);
+  EXPECT_NEAR(xa2[0], fa[0], 1e-9);
+  EXPECT_NEAR(xb2[0], fb[0], 1e-9);
 }
 
 // ------------------------------------------------------------------ flux correction
@@ -300,7 +319,7 @@ TEST(HydraulicConditions, SubmergedBlockFeelsArchimedes) {
   for (int j = 0; j < conditions.loads().count(); ++j) {
     for (int d = 0; d < kDim; ++d) {
       sum[d] += liquid(j, d);
-      EXPECT_DOUBLE_EQ(mixture(j, d), liquid(j, d));  // into both equations
+      EXPECT_DOUBLE_EQ(mixture(j, d), liquid(j, d));  // into both (no suction: p >= 0 here)
     }
     if (X(node(j), 0) == 0.0) left_x += liquid(j, 0);
   }
@@ -400,6 +419,41 @@ TEST(HydraulicConditions, SeepageAboveTheLevelAndInfiltrationNodes) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.where(), "Stages/flood/Boundary Conditions/rain");
   }
+}
+
+TEST(HydraulicConditions, LinearSuctionAboveTheLevelLoadsTheLiquidOnly) {
+  // The 2 x 2 block of 1 m quads under H = 1 m, linear suction above, rho g = 1e4 (g = 10).
+  // The top (y = 2): p = -1e4 over 2 m. Liquid: -p n L / 2 per side end, n = (0, 1): +5e3
+  // at the corners, +1e4 at the middle node (up). Mixture: 0 there (air above). The base
+  // (y = 0, p = 1e4): both get -1e4 n L/2, i.e. +5e3 / +1e4 upward (free water below).
+  const Mesh mesh = test::rectangleMesh(2, 2, 2.0, 2.0, ElementType::Quad4);
+  FreeBoundary boundary(mesh);
+  boundary.detect(test::seedUniform(mesh));
+  StageSpec stage;
+  stage.name = "flood";
+  BoundarySpec head = headCondition("river", 1.0, ZoneSpec{});
+  head.hydraulic.above = AboveLevel::LinearSuction;
+  stage.boundaries = {head};
+  HydraulicConditions conditions(mesh, stage);
+  conditions.plan(0.0, 10.0, boundary);
+  const auto node = test::hostCopy(conditions.loads().node);
+  const auto liquid = test::hostCopy(conditions.loads().liquid);
+  const auto mixture = test::hostCopy(conditions.loads().mixture);
+  int checked = 0;
+  for (int j = 0; j < conditions.loads().count(); ++j) {
+    const int i = node(j);
+    if (i == 7) {  // top middle
+      EXPECT_NEAR(liquid(j, 1), 1e4, 1e-9);
+      EXPECT_NEAR(mixture(j, 1), 0.0, 1e-9);
+      ++checked;
+    }
+    if (i == 1) {  // base middle
+      EXPECT_NEAR(liquid(j, 1), 1e4, 1e-9);
+      EXPECT_NEAR(mixture(j, 1), 1e4, 1e-9);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2);
 }
 
 }  // namespace

@@ -13,9 +13,13 @@
 ///    force (4.42): the thesis loads the mixture with the total traction, the liquid sees a
 ///    loaded surface only through a prescribed pressure;
 ///  - LiquidPressureBoundary: a prescribed liquid pressure p^ (compression positive) on a
-///    side set: nodal force -p^ n L / 2 per end node (n the outward normal), added to the
-///    liquid (4.41) AND the mixture (4.42) external forces (the water load on the surface,
-///    thesis Sec. 4.1). A drained boundary is p^ = 0: the natural condition, nothing to add.
+///    side set: nodal force -p^ n L / 2 per end node (n the outward normal) in the liquid
+///    (4.41) external force, and -max(p^, 0) n L / 2 in the mixture (4.42) external force
+///    (mixtureLoadPressure): the mixture's boundary term is the total traction sigma n, which
+///    is the free water's -p^ n where water stands on the surface (p^ > 0, S_L = 1: the water
+///    load of thesis Sec. 4.1) and 0 where a surface at suction (p^ < 0) touches air; with
+///    Bishop (4.5), sigma' n = S_L p^ n there. A drained boundary is p^ = 0: the natural
+///    condition, nothing to add.
 ///
 /// Moving boundaries (hydraulic head, seepage face, infiltration on the current soil
 /// surface) come later: they will add their own loads and constraints through the same
@@ -89,7 +93,8 @@ class TractionBoundary {
   NodalLoads loads_;
 };
 
-/// A constant prescribed liquid pressure on a side set (into the liquid and mixture).
+/// A constant prescribed liquid pressure on a side set (into the liquid; its free-water part
+/// p^ > 0 into the mixture).
 class LiquidPressureBoundary {
  public:
   LiquidPressureBoundary(std::string name, NodalLoads loads);

@@ -4,12 +4,12 @@
 /// each, shared by the explicit solver's kernels and the unit tests:
 ///  - pressureOfHead: the total head (4.50) solved for the pressure;
 ///  - pressureSideForces / headSideForces: a pressure integrated along a straight side with
-///    the linear edge shape functions, f_a = -n int N_a p dL (the load on the liquid (4.41)
-///    and on the mixture (4.42));
+///    the linear edge shape functions, f_a = -n int N_a p dL (the load on the liquid (4.41);
+///    on the mixture (4.42) only its free-water part, mixtureLoadPressure);
 ///  - relativeFluxCorrection: the predictor-corrector of the infiltration (4.53-4.59) and
 ///    seepage-face conditions.
 /// Signs: p_L compression positive; n the OUTWARD unit normal; a flux q_out = w . n > 0
-/// leaves the soil (the deck's infiltration flux is q_in = -q_out).
+/// leaves the soil (the deck's infiltration flux q is vertical rain: verticalRainOutwardFlux).
 
 #include "argine/core/Types.hpp"
 #include "argine/input/Deck.hpp"
@@ -19,6 +19,19 @@ namespace argine {
 /// p_L = rho_L g (H - y): (4.50) with h_g = y and compression positive (Pa).
 KOKKOS_INLINE_FUNCTION Real pressureOfHead(Real rho_g, Real head, Real y) {
   return rho_g * (head - y);
+}
+
+/// The part of a prescribed liquid pressure p^ (Pa, compression positive) that loads the
+/// MIXTURE (4.42) as a total traction -p n: max(p^, 0). The mixture's boundary term is the
+/// total traction sigma n (4.35), set by what lies outside the soil: free water at p^ > 0
+/// (the surface is saturated, S_L = 1, and sigma n = -p^ n: the water weight of Sec. 4.1),
+/// or air at p = 0. A surface held at suction (p^ < 0) touches air: sigma n = 0, the
+/// suction acts on the pore liquid only (it loads f_L^ext (4.41) in full) and its reaction
+/// is in the skeleton (sigma' n = S_L p^ n by (4.5), compressive). Loading the mixture with
+/// -p^ n, or -S_L(p^) p^ n (sigma' n = 0), would pull the surface outwards and break the
+/// hydrostatic equilibrium of an unsaturated slope (sigma_yy = 0 at its surface).
+KOKKOS_INLINE_FUNCTION Real mixtureLoadPressure(Real prescribed_pressure) {
+  return prescribed_pressure > 0 ? prescribed_pressure : Real(0);
 }
 
 /// Adds to fa, fb (N per m thickness) the nodal forces of a pressure varying linearly from
@@ -49,6 +62,9 @@ struct HeadPressureRule {
   Real head = 0;      ///< H(t) (m)
   AboveLevel above = AboveLevel::ConstantPressure;
   Real pressure_above = 0;  ///< (Pa), AboveLevel::ConstantPressure
+  /// true: the mixture's load, each pressure through mixtureLoadPressure (the suction above
+  /// the level drops out); false: the liquid's load, the full pressure.
+  bool mixture = false;
   /// p_L below (or at) the level, and above it by the rule; the seepage face is a natural
   /// zero-pressure boundary (its correction is separate).
   Real below(Real y) const { return pressureOfHead(rho_g, head, y); }
@@ -75,8 +91,12 @@ inline void headSideForces(const Real xa[kDim], const Real xb[kDim], Real length
   auto piece = [&](Real s0, Real s1) {
     const Real y0 = ya + s0 * (yb - ya), y1 = ya + s1 * (yb - ya);
     const bool below = 0.5 * (y0 + y1) <= H;
-    const Real q0 = below ? rule.below(y0) : rule.aboveLevel(y0);
-    const Real q1 = below ? rule.below(y1) : rule.aboveLevel(y1);
+    Real q0 = below ? rule.below(y0) : rule.aboveLevel(y0);
+    Real q1 = below ? rule.below(y1) : rule.aboveLevel(y1);
+    if (rule.mixture) {  // exact: p has one sign on each piece (cut at the level)
+      q0 = mixtureLoadPressure(q0);
+      q1 = mixtureLoadPressure(q1);
+    }
     addPressurePieceForces(s0, s1, q0, q1, length, normal, fa, fb);
   };
   const bool crosses = (ya - H) * (yb - H) < 0;
@@ -87,13 +107,31 @@ inline void headSideForces(const Real xa[kDim], const Real xb[kDim], Real length
 }
 
 /// The velocity corrections of the infiltration (4.57-4.59) and seepage-face conditions at a
-/// node: with the predicted velocities v_L~, v_S~, the liquid volume fraction n_L = n S_L,
-/// the prescribed outward relative flux w^ . n = q_out, and
-///   q_net = (n_L (v_L~ - v_S~) - w^) . n                                   (4.53)
-///   dv_L  = -q_net n / (n_L (1 + m_L / m_S)),  dv_S = -m_L dv_L / m_S       (4.59, 4.58)
-/// so that n_L (v_L - v_S) . n = q_out afterwards and the mixture momentum m_S v_S + m_L v_L
-/// is unchanged. `solid_moves` false (fixed skeleton): dv_S = 0 and dv_L = -q_net n / n_L
+/// node, from a MEASURED outward relative flux: with `measured` the predicted outward flux
+/// per unit face length (m/s) and `fraction` its derivative along the normal,
+/// d measured / d(w . n) (the liquid volume fraction n_L in the thesis form),
+///   q_net = measured - q_out                                                (4.53)
+///   dv_L  = -q_net n / (fraction (1 + m_L / m_S)),  dv_S = -m_L dv_L / m_S   (4.59, 4.58)
+/// so that the measured flux is q_out afterwards and the mixture momentum m_S v_S + m_L v_L is
+/// unchanged. `solid_moves` false (fixed skeleton): dv_S = 0 and dv_L = -q_net n / fraction
 /// (4.56). Returns q_net.
+KOKKOS_INLINE_FUNCTION Real correctionOfMeasuredFlux(Real fraction, Real measured, Real mass_liquid,
+                                                     Real mass_solid, bool solid_moves,
+                                                     const Real normal[kDim], Real q_out,
+                                                     Real dv_liquid[kDim], Real dv_solid[kDim]) {
+  const Real q_net = measured - q_out;  // 4.53
+  const Real ratio = solid_moves && mass_solid > 0 ? mass_liquid / mass_solid : Real(0);
+  const Real scale = -q_net / (fraction * (1 + ratio));  // 4.59
+  for (int d = 0; d < kDim; ++d) {
+    dv_liquid[d] = scale * normal[d];
+    dv_solid[d] = -ratio * dv_liquid[d];  // 4.58
+  }
+  return q_net;
+}
+
+/// The thesis form (4.53-4.59): with the predicted velocities v_L~, v_S~ and the liquid
+/// volume fraction n_L = n S_L, the measured flux is n_L (v_L~ - v_S~) . n, so that
+/// n_L (v_L - v_S) . n = q_out afterwards. Returns q_net.
 KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liquid, Real mass_solid,
                                                    bool solid_moves, const Real normal[kDim],
                                                    const Real velocity_liquid[kDim],
@@ -101,14 +139,45 @@ KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liqu
                                                    Real dv_liquid[kDim], Real dv_solid[kDim]) {
   Real relative = 0;
   for (int d = 0; d < kDim; ++d) relative += (velocity_liquid[d] - velocity_solid[d]) * normal[d];
-  const Real q_net = n_liquid * relative - q_out;  // 4.53
-  const Real ratio = solid_moves && mass_solid > 0 ? mass_liquid / mass_solid : Real(0);
-  const Real scale = -q_net / (n_liquid * (1 + ratio));  // 4.59
+  return correctionOfMeasuredFlux(n_liquid, n_liquid * relative, mass_liquid, mass_solid,
+                                  solid_moves, normal, q_out, dv_liquid, dv_solid);
+}
+
+/// The flux-weight form used by the solver: the node's outward liquid volume flux as the
+/// point mass balance sees it is w . G_i / rho_L (G_i the flux weight, HydraulicBoundaryStep),
+/// per unit face length |S_i| (S_i = sum of n L / 2 over the condition's sides at the node):
+///   measured = w~ . G_i / (rho_L |S_i|),  fraction = n . G_i / (rho_L |S_i|).
+/// After the correction the node passes exactly q_out |S_i| (m^2/s per m), so the liquid a
+/// condition lets through is the prescribed one even where the points no longer fill the
+/// elements (a deforming body: G_i is then not n_L rho_L S_i). For full Tri3 elements
+/// G_i = rho_L n_L S_i and this is the thesis form. Returns false (nothing set) when
+/// n . G_i <= 0 (no liquid behind the face along n): the caller uses the thesis form.
+KOKKOS_INLINE_FUNCTION bool fluxWeightCorrection(
+    const Real weight[kDim], Real density, Real face_length, Real mass_liquid, Real mass_solid,
+    bool solid_moves, const Real normal[kDim], const Real velocity_liquid[kDim],
+    const Real velocity_solid[kDim], Real q_out, Real dv_liquid[kDim], Real dv_solid[kDim],
+    Real& q_net) {
+  const Real per_length = 1 / (density * face_length);
+  Real fraction = 0, measured = 0;
   for (int d = 0; d < kDim; ++d) {
-    dv_liquid[d] = scale * normal[d];
-    dv_solid[d] = -ratio * dv_liquid[d];  // 4.58
+    fraction += normal[d] * weight[d] * per_length;
+    measured += (velocity_liquid[d] - velocity_solid[d]) * weight[d] * per_length;
   }
-  return q_net;
+  if (!(fraction > 0) || !(face_length > 0)) return false;
+  q_net = correctionOfMeasuredFlux(fraction, measured, mass_liquid, mass_solid, solid_moves, normal,
+                                   q_out, dv_liquid, dv_solid);
+  return true;
+}
+
+/// The prescribed outward relative flux w^ . n (m/s) of vertical rain of intensity q (m/s,
+/// per unit HORIZONTAL area; rain positive, evaporation negative) on a surface of outward
+/// unit normal n: w^ = (0, -q), so w^ . n = -q n_y. A side of length L then lets in
+/// q n_y L = q times its horizontal projection, whatever the orientation of the sides that
+/// represent the surface: a staircase of free sides on the background mesh receives the rain
+/// of the surface it approximates (its vertical risers none), and a 45 degree face q L /
+/// sqrt 2. Faces turned down (n_y <= 0) receive none: w^ . n = 0 there.
+KOKKOS_INLINE_FUNCTION Real verticalRainOutwardFlux(Real q, const Real normal[kDim]) {
+  return normal[1] > 0 ? -q * normal[1] : Real(0);
 }
 
 /// Kinds of nodal correction of one step.

@@ -6,9 +6,11 @@
 /// or on a mesh side set (sides of active elements only). Every step, plan() turns them
 /// into device lists for the solver's kernels:
 ///  - nodal loads: the pressure integrated along the condition's sides (HydraulicAlgebra),
-///    added to BOTH the liquid (4.41) and the mixture (4.42) external forces, so the water
-///    weight acts on the slope;
-///  - nodal corrections: infiltration (flux q_in = -q_out) and seepage-face nodes, corrected
+///    added to the liquid (4.41) external force, and its free-water part (p^ > 0) to the
+///    mixture (4.42) external force, so the water weight acts on the slope; a suction above
+///    the level loads the liquid only (mixtureLoadPressure: sigma n = 0 against air);
+///  - nodal corrections: infiltration (vertical rain, q_out = -q n_y) and seepage-face nodes,
+///  corrected
 ///    by the predictor-corrector (4.53-4.59) in the solver;
 ///  - ownership: each node of a condition's sides belongs to the first condition (deck
 ///    order) that claims it, for the liquid volume each condition lets through.
@@ -51,6 +53,9 @@ struct FluxCorrectionList {
   /// Outward unit normal of the correcting condition's own sides at the node: the sum of
   /// n L / 2 over them, normalised (HydraulicBoundaryStep.hpp says why not 4.51 here).
   Kokkos::View<Real* [kDim], MemSpace> normal;
+  /// |sum of n L / 2| over the same sides (m): the node's share of the face, which passes
+  /// q_out times it (fluxWeightCorrection).
+  Kokkos::View<Real*, MemSpace> face_length;
   Kokkos::View<int*, MemSpace> applied;  ///< 1 where the correction applied this step
   int count() const { return static_cast<int>(node.extent(0)); }
 };

@@ -79,15 +79,18 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);
 /// Sec. 4.2 steps 2-5 at the correction nodes: predicted v~ = v^k + a dt, q_net (4.53), the
 /// switch (correctionApplies), and the corrected accelerations a += dv / dt (4.58, 4.59).
 /// Marks corrections.applied. `solid_moves` false in fixed-skeleton stages (4.56).
+/// The node's flux is measured with its flux weight G_i (fluxWeightCorrection), so that the
+/// liquid the point mass balance lets through the node is exactly the prescribed one;
+/// `liquid_density` (kg/m^3) is the reference rho_L that converts G_i to volumes.
 void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
                                    const BoundaryGradientFields& fields, Real dt, bool solid_moves,
-                                   GridFields& grid);
+                                   Real liquid_density, GridFields& grid);
 
 /// Re-imposes the applied corrections on the remapped nodal velocities v^{k+1}, so the
 /// relative flux used by the mass balance is the prescribed one.
 void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 const BoundaryGradientFields& fields, bool solid_moves,
-                                GridFields& grid);
+                                Real liquid_density, GridFields& grid);
 
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
