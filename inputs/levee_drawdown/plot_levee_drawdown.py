@@ -116,7 +116,7 @@ def plot_history(name, probes, diag, path):
     plt.close(fig)
 
 
-def plot_map(name, directory, path):
+def plot_map(name, directory, path, until=None):
     """Points coloured by their displacement norm at three output times; skipped without
     SciPy or the points file."""
     try:
@@ -134,7 +134,7 @@ def plot_map(name, directory, path):
                   for k, n in enumerate(names)}
         x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
         time = f.variables["time_whole"][:].copy()
-    last = len(time) - 1
+    last = len(time) - 1 if until is None else int(np.searchsorted(time, until * (1 + 1e-9))) - 1
     shown = sorted({int(np.searchsorted(time, STAGE_START + 0.5 * (time[last] - STAGE_START)
                                         / 4)), int(np.searchsorted(time, 0.5 * (STAGE_START
                                                                               + time[last]))),
@@ -164,18 +164,24 @@ def main(default_name="levee_drawdown"):
     parser.add_argument("--results")
     parser.add_argument("--figures")
     parser.add_argument("--times", type=float, nargs="*")
+    parser.add_argument("--until", type=float, help="ignore results after this time (s)")
     args = parser.parse_args()
     name = args.name
     results = args.results or os.path.join(ROOT, "results", name)
     figures = args.figures or FOLDER.get(name, HERE)
     probes = read_probes(results, name)
     diag = read_csv(os.path.join(results, name + "_diagnostics.csv"))
+    if args.until is not None:  # drop the rows after --until (a run that went on longer)
+        for series in (*probes.values(), diag):
+            keep = series["time"] <= args.until * (1 + 1e-9)
+            for key in series:
+                series[key] = series[key][keep]
     report(name, probes, diag, args.times or TIMES.get(name, (5.0, 10.0, 20.0)))
     history = os.path.join(figures, name + "_history.png")
     plot_history(name, probes, diag, history)
     written = [history]
     mapped = os.path.join(figures, name + "_map.png")
-    if plot_map(name, results, mapped):
+    if plot_map(name, results, mapped, args.until):
         written.append(mapped)
     print("wrote " + " and ".join(written))
 
