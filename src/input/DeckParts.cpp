@@ -168,7 +168,50 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
       spec.side_set = boundary.text("Side Set");
       spec.pressure = boundary.real("Pressure (Pa)");
       break;
+    // implicit seepage (P5)
+    case BoundaryKind::Infiltration:
+      spec.side_set = boundary.text("Side Set");
+      spec.flux = boundary.real("Flux (m/s)");
+      spec.ponding = boundary.boolean("Ponding");
+      break;
+    case BoundaryKind::SeepageFace:
+      spec.side_set = boundary.text("Side Set");
+      break;
   }
+  return spec;
+}
+
+// ---------------------------------------------------------------- implicit seepage (P5)
+
+LinearSolverSpec parseLinearSolver(const DeckSection& linear) {
+  LinearSolverSpec spec;
+  spec.solver = linear.word("Solver") == "cg" ? "CG" : "GMRES";
+  spec.tolerance = linear.real("Tolerance");
+  spec.max_iterations = static_cast<int>(linear.integer("Maximum Iterations"));
+  const std::string preconditioner = linear.word("Preconditioner");
+  spec.preconditioner = preconditioner == "riluk"        ? "RILUK"
+                        : preconditioner == "ilut"       ? "ILUT"
+                        : preconditioner == "relaxation" ? "RELAXATION"
+                        : preconditioner == "chebyshev"  ? "CHEBYSHEV"
+                                                         : "NONE";
+  spec.fill_level = static_cast<int>(linear.integer("Fill Level"));
+  spec.sweeps = static_cast<int>(linear.integer("Sweeps"));
+  return spec;
+}
+
+ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
+  ImplicitSeepageSpec spec;
+  spec.theta = seepage.real("Theta");
+  spec.initial_step = seepage.real("Initial Step (s)");
+  spec.min_step = seepage.real("Minimum Step (s)");
+  if (seepage.has("Maximum Step (s)")) spec.max_step = seepage.real("Maximum Step (s)");
+  spec.adaptive = seepage.boolean("Adaptive Step");
+  spec.max_saturation_change = seepage.real("Maximum Saturation Change");
+  spec.max_picard_iterations = static_cast<int>(seepage.integer("Picard Iterations"));
+  spec.pressure_tolerance = seepage.real("Pressure Tolerance (Pa)");
+  spec.mass_tolerance = seepage.real("Mass Tolerance");
+  spec.min_suction_fraction = seepage.real("Minimum Suction Fraction");
+  spec.linear = parseLinearSolver(seepage.section("Linear Solver"));
   return spec;
 }
 
@@ -231,6 +274,8 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.time_step = parseTimeStep(stage.section("Time Step"));
   for (const auto& boundary : stage.entries("Boundary Conditions"))
     spec.boundaries.push_back(parseBoundary(boundary));
+  if (spec.solver == SolverKind::ImplicitSeepage)
+    spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
   return spec;
 }
 

@@ -69,6 +69,35 @@ struct MaterialSpec {
   InitialStateSpec initial;
 };
 
+// ---------------------------------------------------------------- implicit seepage (P5)
+// Settings of an `implicit seepage` stage (seepage room, ImplicitSeepageSolver).
+
+/// The Belos solver and Ifpack2 preconditioner of the implicit seepage path's linear systems.
+struct LinearSolverSpec {
+  std::string solver = "GMRES";          ///< Belos name: "GMRES" or "CG" (CG: symmetric)
+  Real tolerance = 1e-12;                ///< relative residual of each linear solve
+  int max_iterations = 1000;             ///< Krylov iterations per solve
+  std::string preconditioner = "RILUK";  ///< Ifpack2: RILUK, ILUT, RELAXATION, CHEBYSHEV, NONE
+  int fill_level = 1;                    ///< RILUK level of fill / ILUT level-of-fill
+  std::string relaxation = "Symmetric Gauss-Seidel";  ///< RELAXATION type
+  int sweeps = 2;                                     ///< RELAXATION sweeps / CHEBYSHEV degree
+};
+
+struct ImplicitSeepageSpec {
+  Real theta = 1;                      ///< 1: backward Euler, 1/2: Crank-Nicolson
+  Real initial_step = 1;               ///< first time step (s)
+  Real min_step = 1e-6;                ///< below this a failed step stops the run (s)
+  Real max_step = 1e30;                ///< (s)
+  bool adaptive = true;                ///< false: every step is initial_step
+  Real max_saturation_change = 0.05;   ///< target max |dS_L| per step at any point
+  int max_picard_iterations = 30;      ///< per step (and per active-set pass)
+  int max_active_set_iterations = 30;  ///< seepage face / ponding switches per step
+  Real pressure_tolerance = 1e-6;      ///< max |dp_L| of the last Picard update (Pa)
+  Real mass_tolerance = 1e-12;         ///< |free-node residual| / (storage + flux scale)
+  Real min_suction_fraction = 1e-2;    ///< van Genuchten lambda < 0.5: s_reg = this x p_ref
+  LinearSolverSpec linear;
+};
+
 // ---------------------------------------------------------------- stages
 
 enum class SolverKind { Explicit, FixedSkeleton, QuasiStatic, ImplicitSeepage };
@@ -88,6 +117,8 @@ enum class BoundaryKind {
   LiquidFixity,    ///< zero relative liquid velocity (impermeable) on a side or node set
   Traction,        ///< total traction vector on a side set (Pa)
   LiquidPressure,  ///< prescribed liquid pressure on a side set (Pa)
+  Infiltration,    ///< implicit seepage: prescribed inflow (m/s) on a side set, ponding switch
+  SeepageFace,     ///< implicit seepage: potential seepage face on a side set
 };
 
 struct BoundarySpec {
@@ -99,6 +130,10 @@ struct BoundarySpec {
   bool fix_y = false;
   std::array<Real, 2> traction{0.0, 0.0};  ///< (Pa), tension positive along the outward normal
   Real pressure = 0;                       ///< prescribed p_L (Pa, compression positive)
+  // implicit seepage (P5) kinds: Infiltration (flux on a side set, ponding switch) and
+  // SeepageFace (potential seepage face on a side set)
+  Real flux = 0;        ///< Infiltration: inflow normal to the surface (m/s), >= 0
+  bool ponding = true;  ///< Infiltration: switch to p_L = 0 when the surface saturates
 };
 
 struct StageSpec {
@@ -112,6 +147,7 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
+  ImplicitSeepageSpec seepage;  ///< used by `implicit seepage` stages only
 };
 
 // ---------------------------------------------------------------- whole deck

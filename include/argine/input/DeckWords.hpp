@@ -70,10 +70,10 @@ inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
 };
 
 inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
-    {"solid fixity", BoundaryKind::SolidFixity},
-    {"impermeable", BoundaryKind::LiquidFixity},
-    {"traction", BoundaryKind::Traction},
-    {"liquid pressure", BoundaryKind::LiquidPressure},
+    {"solid fixity", BoundaryKind::SolidFixity},  {"impermeable", BoundaryKind::LiquidFixity},
+    {"traction", BoundaryKind::Traction},         {"liquid pressure", BoundaryKind::LiquidPressure},
+    {"infiltration", BoundaryKind::Infiltration},  // implicit seepage (P5)
+    {"seepage face", BoundaryKind::SeepageFace},   // implicit seepage (P5)
 };
 
 inline constexpr DeckWord<ElementType> kElementWords[] = {
