@@ -283,12 +283,11 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
                                 integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));
         break;
       }
-      // implicit seepage (P5): resolved by seepage/SeepageBoundary for implicit stages only
+      case BoundaryKind::TotalHead:  // on the moving boundary: HydraulicConditions
+      case BoundaryKind::PressureSeries:
       case BoundaryKind::Infiltration:
       case BoundaryKind::SeepageFace:
-        throw InputError(where,
-                         "infiltration and seepage face conditions are supported by "
-                         "'implicit seepage' stages only in this version");
+        break;
     }
   }
   for (const auto& fixity : solid_fixities_) fixity.constrain(constraints_);

@@ -94,6 +94,8 @@ void checkDeck(const Deck& deck) {
                            "), got " + degrees(solid.dilatancy_angle));
   }
 
+  input_detail::checkStageAdditions(deck);  // issue P4
+
   if (deck.output.name.find('/') != std::string::npos)
     throw InputError("Output/Name", "must be a file stem without '/', got '" + deck.output.name +
                                         "' (use Output/Directory)");

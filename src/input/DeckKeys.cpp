@@ -84,10 +84,16 @@ ListSchema solidKeys() {
                 .below(90)
                 .when("Model", kMohrCoulombModels)
                 .byDefault(0.0));
-  solid.add(KeySpec::real("Tensile Strength (Pa)", "Pa", "tension cut-off")
+  solid.add(KeySpec::real("Tensile Strength (Pa)", "Pa",
+                          "tension cut-off: largest principal stress <= this (Tension Cut-Off)")
                 .atLeast(0)
                 .when("Model", kMohrCoulombModels)
                 .byDefault(0.0));
+  solid.add(KeySpec::boolean("Tension Cut-Off",
+                             "apply the tension cut-off at Tensile Strength (it binds only "
+                             "below the apex c cot phi)")
+                .when("Model", kMohrCoulombModels)
+                .byDefault(true));
   solid.add(KeySpec::real("Cohesion Increase Max (Pa)", "Pa",
                           "dc_max in c = c' + dc_max (1 - exp(-B s/p_atm)) (Eq. 4.25)")
                 .atLeast(0)
@@ -202,6 +208,23 @@ ListSchema initialStateKeys() {
   return initial;
 }
 
+// ---- Locking mitigation (volumetric averaging, physics/VolumetricAveraging.hpp)
+
+ListSchema lockingMitigationKeys() {
+  ListSchema locking;
+  locking.add(KeySpec::choice("Volumetric Strain Averaging", deckWords(kIncrementAveragingWords),
+                              "the volumetric strain increment of each point replaced by the "
+                              "volume-weighted average over the points of its element "
+                              "(element, MPM-MIXED) or mapped to the nodes and back (nodal "
+                              "mixed discretisation)")
+                  .byDefault(std::string("none")));
+  locking.add(KeySpec::choice("Liquid Pressure Averaging", deckWords(kIncrementAveragingWords),
+                              "the same averaging of the liquid pressure increment of "
+                              "saturated points")
+                  .byDefault(std::string("none")));
+  return locking;
+}
+
 ListSchema materialKeys() {
   ListSchema material;
   material.add(KeySpec::text("Block", "mesh element block filled with this material").require());
@@ -231,6 +254,8 @@ ListSchema materialKeys() {
                    .require());
   material.add(KeySpec::sublist("Initial State", initialStateKeys(),
                                 "state of the points before the first stage"));
+  material.add(KeySpec::sublist("Locking Mitigation", lockingMitigationKeys(),
+                                "volumetric-locking / cell-crossing mitigation"));
   return material;
 }
 
@@ -261,6 +286,99 @@ ListSchema timeStepKeys() {
   return step;
 }
 
+// ---------------------------------------------------------------- hydraulic conditions (P3)
+// Conditions on the moving free boundary (thesis Sec. 4.1-4.3): where (a zone tested on the
+// current free boundary, or a side set) and a value in time (constant, table or CSV file).
+
+const Words kHydraulicKinds{"total head", "pressure series", "infiltration", "seepage face"};
+
+ListSchema zoneKeys() {
+  ListSchema zone;
+  zone.add(KeySpec::choice("Type", deckWords(kZoneWords),
+                           "region tested at the midpoints of the current free sides: "
+                           "everywhere, half-plane, box or polyline band")
+               .require());
+  zone.add(KeySpec::reals("Point (m)", "m", 2, "a point on the edge of the half-plane")
+               .when("Type", {"half-plane"})
+               .require());
+  zone.add(KeySpec::reals("Inside Direction", "-", 2,
+                          "vector pointing into the half-plane: the zone is (x - Point) . "
+                          "direction >= 0 (x < 8 m: Point [8, 0], direction [-1, 0])")
+               .when("Type", {"half-plane"})
+               .require());
+  zone.add(KeySpec::reals("Lower Left (m)", "m", 2, "corner (x_min, y_min) of the box")
+               .when("Type", {"box"})
+               .require());
+  zone.add(KeySpec::reals("Upper Right (m)", "m", 2, "corner (x_max, y_max) of the box")
+               .when("Type", {"box"})
+               .require());
+  zone.add(KeySpec::reals("Vertices (m)", "m", 0, "polyline vertices x0, y0, x1, y1, ...")
+               .when("Type", {"polyline band"})
+               .require());
+  zone.add(KeySpec::real("Width (m)", "m", "largest distance from the polyline")
+               .above(0)
+               .when("Type", {"polyline band"})
+               .require());
+  return zone;
+}
+
+/// Adds the three ways of giving a time-dependent `value` (a constant `<value> (<unit>)`,
+/// a `<value> Table` of time, value pairs, a `<value> File` CSV), exactly one of them.
+void addTimeSeriesKeys(ListSchema& boundary, const std::string& value, const std::string& unit,
+                       const std::string& kind, const std::string& doc, bool constant) {
+  if (constant)
+    boundary.add(
+        KeySpec::real(value + " (" + unit + ")", unit, "constant " + doc).when("Type", {kind}));
+  boundary.add(KeySpec::reals(value + " Table", "s, " + unit, 0,
+                              doc + " in time: pairs t0, v0, t1, v1, ... (times increasing; "
+                                    "linear between, clamped outside)")
+                   .when("Type", {kind}));
+  boundary.add(
+      KeySpec::file(value + " File", doc + " in time: CSV file with columns time (s), value (" +
+                                         unit + "), optional header line (relative to the deck)")
+          .when("Type", {kind}));
+  std::vector<std::string> group;
+  if (constant) group.push_back(value + " (" + unit + ")");
+  group.push_back(value + " Table");
+  group.push_back(value + " File");
+  boundary.exactlyOneOf(group, Condition{"Type", {kind}});
+}
+
+void addHydraulicBoundaryKeys(ListSchema& boundary) {
+  boundary.add(KeySpec::sublist("Zone", zoneKeys(),
+                                "where the condition applies on the CURRENT free boundary "
+                                "(instead of a side set)")
+                   .when("Type", kHydraulicKinds));
+  boundary.exactlyOneOf({"Side Set", "Zone"}, Condition{"Type", kHydraulicKinds});
+  addTimeSeriesKeys(boundary, "Total Head", "m", "total head",
+                    "total head H = y + p_L / (rho_L g) (Eq. 4.50), an elevation", true);
+  boundary.add(KeySpec::choice("Above Level", deckWords(kAboveLevelWords),
+                               "on the boundary above the current level: constant pressure, "
+                               "linear (hydrostatic) suction, or potential seepage face")
+                   .when("Type", {"total head"})
+                   .byDefault(std::string("constant pressure")));
+  boundary.add(KeySpec::real("Pressure Above Level (Pa)", "Pa",
+                             "p_L above the level with Above Level: constant pressure")
+                   .when("Above Level", {"constant pressure"})
+                   .byDefault(0.0));
+  boundary.add(KeySpec::real("Liquid Density (kg/m3)", "kg/m3",
+                             "rho_L converting head to pressure, p_L = rho_L g (H - y)")
+                   .above(0)
+                   .when("Type", {"total head"})
+                   .byDefault(1000.0));
+  addTimeSeriesKeys(boundary, "Pressure", "Pa", "pressure series",
+                    "prescribed p_L (compression positive)", false);
+  addTimeSeriesKeys(boundary, "Flux", "m/s", "infiltration",
+                    "infiltration flux q into the soil (rain positive, evaporation negative)",
+                    true);
+  boundary.add(KeySpec::boolean("Ponding",
+                                "rain the saturated surface cannot take ponds and is imposed "
+                                "anyway (true), or runs off at zero pressure (false)")
+                   .when("Type", {"infiltration"})
+                   .byDefault(false));
+}
+// ---------------------------------------------------------------- end hydraulic conditions
+
 ListSchema boundaryKeys() {
   ListSchema boundary;
   boundary.add(KeySpec::choice("Type", deckWords(kBoundaryWords),
@@ -270,11 +388,10 @@ ListSchema boundaryKeys() {
   boundary.add(KeySpec::text("Node Set", "mesh node set")
                    .when("Type", {"solid fixity", "impermeable"})
                    .requireWhen("Type", {"solid fixity"}));
-  boundary.add(
-      KeySpec::text("Side Set", "mesh side set")
-          .when("Type",
-                {"impermeable", "traction", "liquid pressure", "infiltration", "seepage face"})
-          .requireWhen("Type", {"traction", "liquid pressure", "infiltration", "seepage face"}));
+  boundary.add(KeySpec::text("Side Set", "mesh side set")
+                   .when("Type", {"impermeable", "traction", "liquid pressure", "total head",
+                                  "pressure series", "infiltration", "seepage face"})
+                   .requireWhen("Type", {"traction", "liquid pressure"}));
   boundary.exactlyOneOf({"Node Set", "Side Set"}, Condition{"Type", {"impermeable"}});
   boundary.add(
       KeySpec::choice("Direction", deckWords(kDirectionWords), "velocity components held at zero")
@@ -288,17 +405,7 @@ ListSchema boundaryKeys() {
   boundary.add(KeySpec::real("Pressure (Pa)", "Pa", "prescribed p_L (compression positive)")
                    .when("Type", {"liquid pressure"})
                    .require());
-  // implicit seepage (P5)
-  boundary.add(KeySpec::real("Flux (m/s)", "m/s",
-                             "infiltration: inflow rate normal to the surface (implicit seepage)")
-                   .atLeast(0)
-                   .when("Type", {"infiltration"})
-                   .require());
-  boundary.add(KeySpec::boolean("Ponding",
-                                "infiltration: switch to p_L = 0 while the surface is saturated "
-                                "(the soil takes less than the supply)")
-                   .when("Type", {"infiltration"})
-                   .byDefault(true));
+  addHydraulicBoundaryKeys(boundary);
   return boundary;
 }
 
@@ -370,6 +477,55 @@ ListSchema implicitSeepageKeys() {
   return seepage;
 }
 
+// ---- issue P4: stage relaxation and material changes ----
+
+ListSchema relaxationKeys() {
+  ListSchema relaxation;
+  relaxation.add(KeySpec::real("Kinetic Energy Ratio", "-",
+                               "end the stage when the largest kinetic energy of the last Window "
+                               "steps is below this fraction of the stored elastic energy")
+                     .above(0)
+                     .below(1)
+                     .require());
+  relaxation.add(KeySpec::real("Window (s)", "s",
+                               "time over which the ratio must stay below the tolerance (longer "
+                               "than the slowest oscillation period, so a turning point is not "
+                               "taken for rest)")
+                     .above(0)
+                     .require());
+  return relaxation;
+}
+
+ListSchema materialChangeKeys() {
+  ListSchema change;
+  change.add(
+      KeySpec::real("Young's Modulus (Pa)", "Pa", "new drained Young's modulus E'").above(0));
+  change.add(
+      KeySpec::real("Poisson's Ratio", "-", "new drained Poisson's ratio").above(-1).below(0.5));
+  change.add(KeySpec::real("Cohesion (Pa)", "Pa", "new effective cohesion c' (Mohr-Coulomb models)")
+                 .atLeast(0));
+  change.add(
+      KeySpec::real("Friction Angle (deg)", "deg", "new friction angle (Mohr-Coulomb models)")
+          .atLeast(0)
+          .below(90));
+  change.add(
+      KeySpec::real("Dilatancy Angle (deg)", "deg", "new dilatancy angle (Mohr-Coulomb models)")
+          .atLeast(0)
+          .below(90));
+  change.add(
+      KeySpec::real("Tensile Strength (Pa)", "Pa", "new tension cut-off (Mohr-Coulomb models)")
+          .atLeast(0));
+  change.add(KeySpec::real("Intrinsic Permeability (m2)", "m2",
+                           "new kappa (k_sat follows with the material's rho_L, mu_L, g = 9.81)")
+                 .above(0));
+  change.add(KeySpec::real("Saturated Conductivity (m/s)", "m/s",
+                           "new k_sat (kappa follows); not with Intrinsic Permeability (m2)")
+                 .above(0));
+  return change;
+}
+
+// ---- end of issue P4 stage keys ----
+
 ListSchema stageKeys() {
   ListSchema stage;
   stage.add(KeySpec::choice("Solver", deckWords(kSolverWords),
@@ -397,6 +553,13 @@ ListSchema stageKeys() {
   stage.add(KeySpec::sublist("Implicit Seepage", implicitSeepageKeys(),
                              "settings of an implicit seepage stage")
                 .when("Solver", {"implicit seepage"}));
+  // issue P4
+  stage.add(KeySpec::sublist("Relaxation", relaxationKeys(),
+                             "end the stage early once quasi-static (Duration (s) is then the "
+                             "maximum)"));
+  stage.add(KeySpec::namedSublists("Material Changes", "material", materialChangeKeys(),
+                                   "new parameters of materials (entry name = material name), "
+                                   "applied when the stage starts"));
   return stage;
 }
 
@@ -410,6 +573,79 @@ ListSchema outputKeys() {
                  .byDefault(std::string("argine")));
   return output;
 }
+
+// ---- issue P4: initialisation and probes ----
+
+ListSchema initialisationKeys() {
+  ListSchema init;
+  init.add(KeySpec::choice("Method", deckWords(kInitialisationWords),
+                           "uniform: each material's Initial State; K0 procedure: geostatic "
+                           "stress and hydrostatic p_L from the surfaces below (thesis Ch. 4 "
+                           "Sec. 5.1)")
+               .byDefault(std::string("uniform")));
+  init.add(KeySpec::reals("Ground Surface (m)", "m", 0,
+                          "ground surface as x0, y0, x1, y1, ... (x increasing; flat beyond the "
+                          "ends); the overburden is integrated from it down")
+               .when("Method", {"K0 procedure"})
+               .require());
+  init.add(KeySpec::reals("Phreatic Surface (m)", "m", 0,
+                          "zero-pressure surface as x0, y0, x1, y1, ... (x increasing); above the "
+                          "ground it is an outside water level whose weight loads the ground. "
+                          "Absent: each material's uniform Initial State p_L")
+               .when("Method", {"K0 procedure"}));
+  init.add(KeySpec::real("Maximum Suction (Pa)", "Pa",
+                         "cap on the suction above the phreatic surface (Fig. 4.7 a); absent: "
+                         "linear hydrostatic suction (Fig. 4.7 b)")
+               .atLeast(0)
+               .when("Method", {"K0 procedure"}));
+  return init;
+}
+
+ListSchema pointProbeKeys() {
+  ListSchema point;
+  point.add(
+      KeySpec::reals("Position (m)", "m", 2, "initial position; the nearest point is followed")
+          .require());
+  point.add(KeySpec::real("Tolerance (m)", "m", "the nearest point must lie this close")
+                .above(0)
+                .require());
+  return point;
+}
+
+ListSchema sectionProbeKeys() {
+  ListSchema section;
+  section.add(KeySpec::choice("Type", deckWords(kSectionWords),
+                              "band: every point within Width/2 of the segment (one row per "
+                              "point); profile: p_L and S_L at Samples positions along it")
+                  .require());
+  section.add(KeySpec::reals("From (m)", "m", 2, "start of the segment").require());
+  section.add(KeySpec::reals("To (m)", "m", 2, "end of the segment").require());
+  section.add(KeySpec::real("Width (m)", "m",
+                            "band width; for a profile the diameter of the averaging disc "
+                            "around each sample (inverse-distance weights)")
+                  .above(0)
+                  .require());
+  section.add(KeySpec::integer("Samples", "sample positions of a profile (ends included)")
+                  .atLeast(2)
+                  .when("Type", {"profile"})
+                  .byDefault(10LL));
+  return section;
+}
+
+ListSchema probeKeys() {
+  ListSchema probes;
+  probes.add(KeySpec::real("Interval (s)", "s", "time between probe rows; 0: at every output")
+                 .atLeast(0)
+                 .byDefault(0.0));
+  probes.add(
+      KeySpec::namedSublists("Points", "point", pointProbeKeys(),
+                             "material points followed by id; file <Name>_probe_<point>.csv"));
+  probes.add(KeySpec::namedSublists("Sections", "section", sectionProbeKeys(),
+                                    "line sections; file <Name>_section_<section>.csv"));
+  return probes;
+}
+
+// ---- end of issue P4 deck keys ----
 
 ListSchema makeDeckSchema() {
   ListSchema deck;
@@ -425,6 +661,10 @@ ListSchema makeDeckSchema() {
           .require()
           .atLeastOneEntry());
   deck.add(KeySpec::sublist("Output", outputKeys(), "result files"));
+  // issue P4
+  deck.add(KeySpec::sublist("Initialisation", initialisationKeys(),
+                            "initial stress and liquid pressure of the points"));
+  deck.add(KeySpec::sublist("Probes", probeKeys(), "CSV time series of points and sections"));
   checkSchema(deck);
   return deck;
 }

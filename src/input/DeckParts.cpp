@@ -58,6 +58,7 @@ SolidSpec parseSolid(const DeckSection& solid) {
   spec.friction_angle = radians(solid.real("Friction Angle (deg)"));
   spec.dilatancy_angle = radians(solid.real("Dilatancy Angle (deg)"));
   spec.tensile_strength = solid.real("Tensile Strength (Pa)");
+  spec.tension_cutoff = solid.boolean("Tension Cut-Off");
   if (spec.model == SolidModel::MohrCoulomb) return spec;
   spec.cohesion_increase_max = solid.real("Cohesion Increase Max (Pa)");
   spec.cohesion_suction_rate = solid.real("Cohesion Suction Rate B");
@@ -144,6 +145,90 @@ TimeStepSpec parseTimeStep(const DeckSection& step) {
   return spec;
 }
 
+// ---------------------------------------------------------------- hydraulic conditions (P3)
+
+ZoneSpec parseZone(const DeckSection& zone) {
+  ZoneSpec spec;
+  spec.kind = deckValue(kZoneWords, zone.word("Type"));
+  switch (spec.kind) {
+    case ZoneSpec::Kind::Everywhere:
+      break;
+    case ZoneSpec::Kind::HalfPlane:
+      spec.point = pair(zone.reals("Point (m)"));
+      spec.direction = pair(zone.reals("Inside Direction"));
+      if (spec.direction[0] == 0 && spec.direction[1] == 0)
+        throw InputError(zone.pathOf("Inside Direction"), "a non-zero vector is needed");
+      break;
+    case ZoneSpec::Kind::Box:
+      spec.lower_left = pair(zone.reals("Lower Left (m)"));
+      spec.upper_right = pair(zone.reals("Upper Right (m)"));
+      if (!(spec.lower_left[0] < spec.upper_right[0] && spec.lower_left[1] < spec.upper_right[1]))
+        throw InputError(zone.pathOf("Upper Right (m)"),
+                         "the upper right corner must lie above and right of the lower left");
+      break;
+    case ZoneSpec::Kind::PolylineBand: {
+      const std::vector<double> values = zone.reals("Vertices (m)");
+      if (values.size() < 4 || values.size() % 2 != 0)
+        throw InputError(zone.pathOf("Vertices (m)"),
+                         "expected x, y pairs of at least 2 vertices, got " +
+                             std::to_string(values.size()) + " numbers");
+      for (std::size_t i = 0; i < values.size(); i += 2)
+        spec.vertices.push_back({values[i], values[i + 1]});
+      spec.width = zone.real("Width (m)");
+      break;
+    }
+  }
+  return spec;
+}
+
+/// The time series of `value` (see addTimeSeriesKeys in DeckKeys.cpp): constant, table or file.
+TimeSeriesSpec parseTimeSeries(const DeckSection& boundary, const std::string& value,
+                               const std::string& unit) {
+  TimeSeriesSpec spec;
+  const std::string constant = value + " (" + unit + ")";
+  if (boundary.has(value + " Table")) {
+    spec.source = TimeSeriesSpec::Source::Table;
+    spec.where = boundary.pathOf(value + " Table");
+    const std::vector<double> pairs = boundary.reals(value + " Table");
+    spec.pairs.assign(pairs.begin(), pairs.end());
+  } else if (boundary.has(value + " File")) {
+    spec.source = TimeSeriesSpec::Source::File;
+    spec.where = boundary.pathOf(value + " File");
+    spec.file = boundary.file(value + " File");
+  } else {
+    spec.source = TimeSeriesSpec::Source::Constant;
+    spec.where = boundary.pathOf(constant);
+    spec.value = boundary.real(constant);
+  }
+  return spec;
+}
+
+HydraulicSpec parseHydraulic(const DeckSection& boundary, BoundaryKind kind) {
+  HydraulicSpec spec;
+  spec.on_zone = boundary.has("Zone");
+  if (spec.on_zone) spec.zone = parseZone(boundary.section("Zone"));
+  switch (kind) {
+    case BoundaryKind::TotalHead:
+      spec.series = parseTimeSeries(boundary, "Total Head", "m");
+      spec.above = deckValue(kAboveLevelWords, boundary.word("Above Level"));
+      if (spec.above == AboveLevel::ConstantPressure)
+        spec.pressure_above = boundary.real("Pressure Above Level (Pa)");
+      spec.liquid_density = boundary.real("Liquid Density (kg/m3)");
+      break;
+    case BoundaryKind::PressureSeries:
+      spec.series = parseTimeSeries(boundary, "Pressure", "Pa");
+      break;
+    case BoundaryKind::Infiltration:
+      spec.series = parseTimeSeries(boundary, "Flux", "m/s");
+      spec.ponding = boundary.boolean("Ponding");
+      break;
+    default:
+      break;
+  }
+  return spec;
+}
+// ---------------------------------------------------------------- end hydraulic conditions
+
 BoundarySpec parseBoundary(const DeckSection& boundary) {
   BoundarySpec spec;
   spec.name = boundary.name();
@@ -168,14 +253,12 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
       spec.side_set = boundary.text("Side Set");
       spec.pressure = boundary.real("Pressure (Pa)");
       break;
-    // implicit seepage (P5)
+    case BoundaryKind::TotalHead:
+    case BoundaryKind::PressureSeries:
     case BoundaryKind::Infiltration:
-      spec.side_set = boundary.text("Side Set");
-      spec.flux = boundary.real("Flux (m/s)");
-      spec.ponding = boundary.boolean("Ponding");
-      break;
     case BoundaryKind::SeepageFace:
-      spec.side_set = boundary.text("Side Set");
+      if (boundary.has("Side Set")) spec.side_set = boundary.text("Side Set");
+      spec.hydraulic = parseHydraulic(boundary, spec.kind);
       break;
   }
   return spec;
@@ -212,6 +295,16 @@ ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
   spec.mass_tolerance = seepage.real("Mass Tolerance");
   spec.min_suction_fraction = seepage.real("Minimum Suction Fraction");
   spec.linear = parseLinearSolver(seepage.section("Linear Solver"));
+  return spec;
+}
+
+// ---- Locking mitigation (volumetric averaging)
+LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
+  LockingMitigationSpec spec;
+  spec.volumetric_strain =
+      deckValue(kIncrementAveragingWords, locking.word("Volumetric Strain Averaging"));
+  spec.liquid_pressure =
+      deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
   return spec;
 }
 
@@ -258,6 +351,7 @@ MaterialSpec parseMaterial(const DeckSection& material) {
   if (spec.phase == PhaseModel::Unsaturated)
     spec.retention = parseRetention(material.section("Retention"));
   spec.initial = parseInitialState(material.section("Initial State"), wet);
+  spec.locking = parseLockingMitigation(material.section("Locking Mitigation"));
   return spec;
 }
 
@@ -276,6 +370,7 @@ StageSpec parseStage(const DeckSection& stage) {
     spec.boundaries.push_back(parseBoundary(boundary));
   if (spec.solver == SolverKind::ImplicitSeepage)
     spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
+  parseStageAdditions(stage, spec);  // issue P4
   return spec;
 }
 

@@ -15,6 +15,17 @@ StageSpec parseStage(const DeckSection& stage);
 /// `Output` -> OutputSpec.
 OutputSpec parseOutput(const DeckSection& output);
 
+// ---- issue P4 ----
+/// `Initialisation` -> InitialisationSpec (polylines as vertex pairs).
+InitialisationSpec parseInitialisation(const DeckSection& initialisation);
+/// `Probes` -> ProbesSpec.
+ProbesSpec parseProbes(const DeckSection& probes);
+/// A stage's `Relaxation` and `Material Changes` into `stage`.
+void parseStageAdditions(const DeckSection& section, StageSpec& stage);
+/// Cross-key checks of initialisation, probes and material changes.
+void checkStageAdditions(const Deck& deck);
+// ---- end of issue P4 ----
+
 /// Throws when two materials name the same block.
 void checkOneMaterialPerBlock(const Deck& deck);
 

@@ -151,6 +151,8 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
     deck.materials.push_back(parseMaterial(material));
   for (const auto& stage : top.entries("Stages")) deck.stages.push_back(parseStage(stage));
   deck.output = parseOutput(top.section("Output"));
+  deck.initialisation = parseInitialisation(top.section("Initialisation"));  // issue P4
+  deck.probes = parseProbes(top.section("Probes"));                          // issue P4
   checkDeck(deck);
   return deck;
 }

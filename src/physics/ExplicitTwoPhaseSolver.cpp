@@ -26,8 +26,15 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
       element_maps_(mesh),
       nodes_in_use_(mesh.numNodes()),
       nodes_next_(mesh.numNodes()),
+      free_boundary_(mesh),
       time_step_(mesh) {
   checkMaterialsForExplicitSolver(materials);
+  for (const auto& material : materials)
+    if (material.phase != PhaseModel::Dry) {
+      reference_liquid_density_ = material.liquid.density;
+      break;
+    }
+  boundary_fields_.allocate(mesh.numNodes());
   const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   Real low[kDim] = {0, 0}, high[kDim] = {0, 0};
   for (int i = 0; i < mesh.numNodes(); ++i)
@@ -40,11 +47,13 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   rates_.allocate(points.count);
   evaluatePointShapes(mesh_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_);
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
 }
 
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
   checkMaterialsForExplicitSolver(materials);
   table_ = MaterialTable(materials);
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -71,6 +80,9 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
   boundaries_ = StageBoundaryConditions(mesh_, stage);
+  hydraulic_ = HydraulicConditions(mesh_, stage);
+  boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
+  free_boundary_stale_ = true;
 
   const MaterialPoints pts = points_;
   if (stage.reset_displacements)
@@ -104,16 +116,23 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
     PhaseTimer timer(profile_, phase);
     run();
   };
-  // assembly at t^k (4.38-4.45), boundary loads
-  timed(StepPhase::P2G, [&] { mapMassesMomentaAndForces(); });
+  // assembly at t^k (4.38-4.45), boundary loads; hydraulic loads on the moving boundary
+  timed(StepPhase::P2G, [&] {
+    mapMassesMomentaAndForces();
+    applyHydraulicLoads();  // Sec. 4: free boundary, 4.51, head 4.50 / pressure loads
+  });
   timed(StepPhase::NodalSolve, [&] {
     solveLiquidMomentum();                  // step 1 (4.36)
     solveMixtureMomentum();                 // step 2 (4.37)
     applyAccelerationBoundaryConditions();  // fixities, impermeable boundaries
+    correctHydraulicAccelerations(dt);      // infiltration, seepage face (4.53-4.59)
   });
   timed(StepPhase::G2PVelocity, [&] { updatePointVelocities(dt); });  // step 3 (7.10, 7.11)
   timed(StepPhase::NodalSolve, [&] { updateNodalVelocities(); });     // step 4
-  timed(StepPhase::G2PStrain, [&] { computeStrainIncrements(dt); });  // step 4
+  timed(StepPhase::G2PStrain, [&] {
+    computeStrainIncrements(dt);  // step 4
+    accountBoundaryFluxes(dt);    // liquid volume through each hydraulic condition
+  });
   // Steps 5-7 in one pass over the points, per point in this order: updatePorosityAndVolume
   // (4.9), updateLiquidPressure (4.12 / 4.14), updateEffectiveStress (4.22, 4.5),
   // updateLiquidState (SWRC, HCC), updatePointPosition (7.13); see PointUpdates.hpp.
@@ -141,6 +160,41 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   computeNodalVelocities(nodes_in_use_, grid_);
 }
 
+void ExplicitTwoPhaseSolver::detectFreeBoundary() {
+  // The free boundary changes only when a point changes element (Fig. 4.4).
+  if (!free_boundary_stale_) return;
+  free_boundary_.detect(points_);
+  free_boundary_stale_ = false;
+}
+
+void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
+  if (hydraulic_.empty()) return;
+  detectFreeBoundary();
+  hydraulic_.plan(time_, gravity_, free_boundary_);
+  boundary_fields_.zero(nodes_in_use_);
+  mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
+                       boundary_fields_);                // 4.51, n_L, flux weights at t^k
+  argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
+}
+
+void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
+  if (hydraulic_.empty()) return;
+  argine::correctHydraulicAccelerations(hydraulic_.corrections(), boundary_fields_, dt,
+                                        !momentum_.fixed_skeleton, grid_);
+  // Fixities and impermeable directions win over the correction at a node that has both:
+  // the fixity's reaction takes the solid part, the impermeable lock the liquid part.
+  applyAccelerationBoundaryConditions();
+}
+
+void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
+  if (hydraulic_.empty()) return;
+  const int conditions = static_cast<int>(hydraulic_.conditions().size());
+  const std::vector<Real> masses = boundaryFluxMasses(hydraulic_.ownership(), conditions,
+                                                      nodes_in_use_, boundary_fields_, grid_, dt);
+  for (int c = 0; c <= conditions; ++c)
+    boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
+}
+
 void ExplicitTwoPhaseSolver::solveLiquidMomentum() {
   argine::solveLiquidMomentum(nodes_in_use_, momentum_, grid_);
 }
@@ -162,15 +216,23 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
   computeNodalVelocities(nodes_in_use_, grid_);
+  if (!hydraulic_.empty())  // the relative flux of the mass balance is the prescribed one
+    correctHydraulicVelocities(hydraulic_.corrections(), boundary_fields_,
+                               !momentum_.fixed_skeleton, grid_);
   boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
   interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
+  // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
+  averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
 }
 
 void ExplicitTwoPhaseSolver::updatePointStates() {
+  averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
   totals_ = argine::updatePointStates(table_, rates_, points_);
+  // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
+  averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {
@@ -181,6 +243,7 @@ void ExplicitTwoPhaseSolver::relocatePoints() {
   if (counts.changed_element > 0) {
     nodes_next_.rebuild(mesh_, points_);
     nodes_next_changed_ = true;
+    free_boundary_stale_ = true;
   }
 }
 

@@ -22,6 +22,7 @@ MaterialTable::MaterialTable(const std::vector<MaterialSpec>& materials) {
     material.retention = spec.retention;
     material.conductivity = spec.conductivity;
     material.constrained_modulus = constrainedModulus(spec.solid);
+    material.locking = spec.locking;
     table(m) = material;
     liquid(m) = carriesLiquid(spec.phase) ? 1 : 0;
     host_.push_back(material);

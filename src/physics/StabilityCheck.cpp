@@ -131,16 +131,12 @@ std::string describePoint(const MaterialPoints& points, int index, bool non_fini
   return out.str();
 }
 
-Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real gravity,
-                 Real boundary_load, Real size) {
+Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& table) {
   const MaterialPoints pts = points;
   const auto materials_m = table.materials();
-  Real weight = 0, stored = 0;
+  Real stored = 0;
   Kokkos::parallel_reduce(
-      "energy_scale_weight", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p, Real& w) { w += pts.mass_solid(p) + pts.mass_liquid(p); }, weight);
-  Kokkos::parallel_reduce(
-      "energy_scale_stored", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      "stored_elastic_energy", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, Real& e) {
         const PointMaterial& material = materials_m(pts.material(p));
         Real s2 = 0;
@@ -155,6 +151,17 @@ Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real 
         }
       },
       stored);
+  return stored;
+}
+
+Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real gravity,
+                 Real boundary_load, Real size) {
+  const MaterialPoints pts = points;
+  Real weight = 0;
+  Kokkos::parallel_reduce(
+      "energy_scale_weight", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Real& w) { w += pts.mass_solid(p) + pts.mass_liquid(p); }, weight);
+  const Real stored = storedElasticEnergy(points, table);
   const PointTotals totals = sumPointTotals(points);
   const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
   return (weight * gravity + boundary_load) * size + stored + kinetic;

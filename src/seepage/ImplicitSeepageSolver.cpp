@@ -50,6 +50,11 @@ struct ImplicitSeepageSolver::Impl {
 
   std::vector<Real> p;  // nodal p_L, every unknown on every rank
 
+  // Time-dependent conditions (a stage's plan): re-evaluated for every step (at()).
+  std::unique_ptr<SeepageBoundaryPlan> plan;
+
+  void applyConditions(const SeepageBoundaryConditions& conditions, bool keep_held);
+
   Impl(const Mesh& m, MaterialPoints& pts, const std::vector<MaterialSpec>& materials)
       : mesh(m), points(pts), table(materials), nodes_per_element(m.nodesPerElement()) {}
 
@@ -224,33 +229,48 @@ void ImplicitSeepageSolver::setGravity(Real gravity) {
   impl_->gravity = gravity;
 }
 
-void ImplicitSeepageSolver::setBoundaryConditions(const SeepageBoundaryConditions& conditions) {
-  Impl& s = *impl_;
-  std::fill(s.fixed.begin(), s.fixed.end(), 0);
-  std::fill(s.switchable.begin(), s.switchable.end(), 0);
-  std::fill(s.held.begin(), s.held.end(), 0);
-  std::fill(s.supply.begin(), s.supply.end(), 0.0);
+void ImplicitSeepageSolver::Impl::applyConditions(const SeepageBoundaryConditions& conditions,
+                                                  bool keep_held) {
+  const std::vector<char> was_held = held;
+  std::fill(fixed.begin(), fixed.end(), 0);
+  std::fill(switchable.begin(), switchable.end(), 0);
+  std::fill(held.begin(), held.end(), 0);
+  std::fill(supply.begin(), supply.end(), 0.0);
   // Nodes outside the active region carry no unknown: their conditions do not apply.
   for (std::size_t j = 0; j < conditions.supply_nodes.size(); ++j) {
-    const int dof = s.dof_of_node.at(conditions.supply_nodes[j]);
+    const int dof = dof_of_node.at(conditions.supply_nodes[j]);
     if (dof == kNone) continue;
-    s.supply[dof] = s.reference_density * conditions.supplies[j];
-    s.switchable[dof] = conditions.switchable[j];
+    supply[dof] = reference_density * conditions.supplies[j];
+    switchable[dof] = conditions.switchable[j];
+    // A node that stays switchable keeps its switch from the last step (the active set's
+    // starting guess); one that was Dirichlet or free starts free.
+    if (keep_held && switchable[dof]) held[dof] = was_held[dof];
   }
   for (std::size_t j = 0; j < conditions.pressure_nodes.size(); ++j) {
-    const int dof = s.dof_of_node.at(conditions.pressure_nodes[j]);
+    const int dof = dof_of_node.at(conditions.pressure_nodes[j]);
     if (dof == kNone) continue;
-    s.fixed[dof] = 1;
-    s.fixed_value[dof] = conditions.pressures[j];
-    s.switchable[dof] = 0;
-    s.supply[dof] = 0;
+    fixed[dof] = 1;
+    fixed_value[dof] = conditions.pressures[j];
+    switchable[dof] = 0;
+    held[dof] = 0;
+    supply[dof] = 0;
   }
+}
+
+void ImplicitSeepageSolver::setBoundaryConditions(const SeepageBoundaryConditions& conditions) {
+  impl_->plan.reset();
+  impl_->applyConditions(conditions, false);
+}
+
+void ImplicitSeepageSolver::setBoundaryPlan(const SeepageBoundaryPlan& plan) {
+  impl_->plan = std::make_unique<SeepageBoundaryPlan>(plan);
+  impl_->applyConditions(plan.at(impl_->time, impl_->time, impl_->settings.theta), false);
 }
 
 void ImplicitSeepageSolver::beginStage(const StageSpec& stage) {
   setSettings(stage.seepage);
   setGravity(stage.gravity);
-  setBoundaryConditions(seepageBoundaryConditions(impl_->mesh, stage));
+  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage));
   projectPressureFromPoints();
 }
 
@@ -289,8 +309,11 @@ void ImplicitSeepageSolver::setNodalPressure(const std::function<Real(Real, Real
 SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   SeepageStepResult result;
   const Real theta = settings.theta;
-  const std::vector<Real> p_old = p;
+  // Conditions of the step, at its end (SeepageBoundaryPlan::at); a rejected step restores
+  // the switches and the next attempt re-evaluates them for its own step.
   const std::vector<char> held_old = held;
+  if (plan) applyConditions(plan->at(time, time + dt, theta), true);
+  const std::vector<Real> p_old = p;
   const std::vector<Real> flux_old = flux(p_old);
 
   std::vector<Real> residual(dofs()), terms_scale(dofs());

@@ -1,18 +1,25 @@
 #include "argine/simulation/Simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "argine/core/Error.hpp"
+#include "argine/init/Initialisation.hpp"
 #include "argine/input/DeckWords.hpp"
 #include "argine/materials/SolidModel.hpp"
 #include "argine/output/CsvWriter.hpp"
 #include "argine/output/ProgressReporter.hpp"
 #include "argine/output/ResultsWriter.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
+#include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointInitialisation.hpp"
+#include "argine/physics/StabilityCheck.hpp"
+#include "argine/probes/ProbeWriter.hpp"
 #include "argine/seepage/ImplicitSeepageSolver.hpp"
+#include "argine/simulation/MaterialChanges.hpp"
+#include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/Setup.hpp"
 #include "argine/timestep/Criteria.hpp"
 
@@ -40,21 +47,10 @@ double wallSeconds() {
 }  // namespace
 
 void checkDeckSupported(const Deck& deck) {
-  for (const auto& material : deck.materials) {
-    if (!isImplemented(material.solid.model))
-      throw InputError("Materials/" + material.name + "/Solid/Model",
-                       std::string("'") + deckWord(kSolidModelWords, material.solid.model) +
-                           "' has no stress update in this version; use 'linear elastic'");
-  }
-  // implicit seepage (P5): infiltration and seepage faces exist for implicit stages only.
-  for (const auto& stage : deck.stages) {
-    if (stage.solver == SolverKind::ImplicitSeepage) continue;
-    for (const auto& boundary : stage.boundaries)
-      if (boundary.kind == BoundaryKind::Infiltration || boundary.kind == BoundaryKind::SeepageFace)
-        throw InputError("Stages/" + stage.name + "/Boundary Conditions/" + boundary.name,
-                         "'infiltration' and 'seepage face' need an 'implicit seepage' stage in "
-                         "this version");
-  }
+  // Every solid model has a stress update (materials/SolidModel.hpp isImplemented); every
+  // solver kind, including 'implicit seepage', runs; the hydraulic kinds (total head, pressure
+  // series, infiltration, seepage face) are supported by the explicit and the implicit stages.
+  (void)deck;
 }
 
 Simulation::Simulation(const Deck& deck, const RunOptions& options)
@@ -63,7 +59,7 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
   checkMaterialsForExplicitSolver(deck_.materials);
   mesh_ = loadMesh(deck_);
   points_ = seedPoints(deck_, mesh_);
-  initialisePointState(deck_.materials, points_);
+  stage_log_.push_back(initialisePoints(deck_, mesh_, points_));  // uniform or K0 (P4)
   solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
   // Output and the log follow points by id, so the solver may reorder them for locality.
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
@@ -92,7 +88,11 @@ RunSummary Simulation::run() {
       options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv",
       std::vector<std::string>{"time", "time_step", "kinetic_energy_solid", "kinetic_energy_liquid",
                                "liquid_mass", "lost_points"});
-  writeOutput();
+  openBoundaryFluxLog();
+  if (!deck_.probes.empty())
+    probes_ = std::make_unique<ProbeWriter>(deck_.probes, options_.output_directory,
+                                            deck_.output.name, points_);
+  if (!options_.quiet && !stage_log_.empty()) std::printf("argine: %s\n", stage_log_[0].c_str());
 
   const double wall_start = wallSeconds();
   for (const auto& stage : deck_.stages) runStage(stage);
@@ -116,7 +116,15 @@ RunSummary Simulation::run() {
 
 void Simulation::runStage(const StageSpec& stage) {
   if (stage.solver == SolverKind::ImplicitSeepage) return runImplicitSeepageStage(stage);
+  applyStageMaterialChanges(stage);  // (P4) before beginStage: its energy scale sees them
   solver_->beginStage(stage);
+  if (!initial_output_written_) writeInitialOutput();
+  std::unique_ptr<RelaxationMonitor> relaxation;
+  std::unique_ptr<MaterialTable> relaxation_table;
+  if (stage.relaxation.enabled) {
+    relaxation = std::make_unique<RelaxationMonitor>(stage.relaxation, solver_->time());
+    relaxation_table = std::make_unique<MaterialTable>(deck_.materials);
+  }
   const Real start = solver_->time();
   const Real end = start + stage.duration;
   // Output times are start + k * interval; the step is shortened to land on them exactly.
@@ -135,14 +143,46 @@ void Simulation::runStage(const StageSpec& stage) {
     dt = choice.time_step;
     dt = std::min(dt, std::min(next_output, end) - solver_->time());
     solver_->step(dt);
+    accumulateBoundaryFluxes();
     ++summary_.steps;
     summary_.point_updates += points_.count;
+    bool written = false;
     if (solver_->time() >= next_output - tolerance) {
       writeOutput();
+      written = true;
       next_output = std::min(end, next_output + interval);
       if (next_output <= solver_->time() + tolerance) next_output = end;
+    } else if (probes_ && probes_->interval() > 0 &&
+               solver_->time() >= next_probe_time_ - tolerance) {
+      writeProbes();
     }
     progress_->update(summary_.steps, solver_->time(), dt, points_.count);
+    if (relaxation) {
+      const auto& d = solver_->diagnostics();
+      const Real stored = storedElasticEnergy(points_, *relaxation_table);
+      if (relaxation->add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid,
+                          stored)) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "stage '%s': relaxed at t = %.6g s after %ld steps: kinetic energy / "
+                      "stored elastic energy %.3g <= %.3g (kinetic peak %.4g J/m, stored %.4g "
+                      "J/m)",
+                      stage.name.c_str(), solver_->time(), relaxation->steps(), relaxation->ratio(),
+                      stage.relaxation.kinetic_energy_ratio, relaxation->peak(), stored);
+        log(line);
+        if (!written) writeOutput();
+        break;
+      }
+    }
+  }
+  if (relaxation && !relaxation->relaxed()) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "stage '%s': NOT relaxed within %.6g s: kinetic energy / stored elastic "
+                  "energy %.3g > %.3g",
+                  stage.name.c_str(), stage.duration, relaxation->ratio(),
+                  stage.relaxation.kinetic_energy_ratio);
+    log(line);
   }
   progress_->endStage(summary_.steps, solver_->time(), dt);
 }
@@ -152,6 +192,11 @@ void Simulation::runStage(const StageSpec& stage) {
 // output time with its own adaptive step, then hands p_L, S_L, rho_L, k, M_L to the points,
 // from which the next stage (explicit or implicit) starts.
 void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
+  applyStageMaterialChanges(stage);  // (P4) into deck_.materials, which the solver reads
+  if (!initial_output_written_) {    // the t = 0 state (no explicit time step to report)
+    initial_output_written_ = true;
+    writeOutput();
+  }
   ImplicitSeepageSolver seepage(mesh_, points_, deck_.materials);
   seepage.setTime(solver_->time());
   seepage.beginStage(stage);
@@ -207,13 +252,123 @@ void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choic
 void Simulation::writeOutput() {
   results_->write(solver_->time(), points_, toOutputFields(solver_->nodalFields()));
   writeDiagnostics();
+  writeBoundaryFluxes();
+  writeProbes();
 }
 
 void Simulation::writeDiagnostics() {
   const auto& d = solver_->diagnostics();
-  diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
-                          d.kinetic_energy_liquid, d.liquid_mass,
-                          static_cast<Real>(d.lost_points)});
+  if (d.step > 0) {
+    diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
+                            d.kinetic_energy_liquid, d.liquid_mass,
+                            static_cast<Real>(d.lost_points)});
+    return;
+  }
+  // Before the first step the solver has no step sums: take them from the points, and the
+  // step the first stage is about to take (P4: a meaningful t = 0 row).
+  const PointTotals totals = sumPointTotals(points_);
+  const MaterialPoints pts = points_;
+  int lost = 0;
+  Kokkos::parallel_reduce(
+      "count_lost_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+      KOKKOS_LAMBDA(const int p, int& sum) { sum += pts.element(p) < 0 ? 1 : 0; }, lost);
+  diagnostics_->writeRow({solver_->time(), initial_time_step_, totals.kinetic_energy_solid,
+                          totals.kinetic_energy_liquid, totals.liquid_mass,
+                          static_cast<Real>(lost)});
+}
+
+// ---------------------------------------------------------------- issue P4
+
+void Simulation::log(const std::string& line) {
+  stage_log_.push_back(line);
+  if (!options_.quiet) {
+    std::printf("argine: %s\n", line.c_str());
+    std::fflush(stdout);
+  }
+}
+
+void Simulation::applyStageMaterialChanges(const StageSpec& stage) {
+  if (stage.material_changes.empty()) return;
+  const std::vector<std::string> lines =
+      applyMaterialChanges(stage.name, stage.material_changes, deck_.materials);
+  solver_->setMaterials(deck_.materials);
+  for (const auto& line : lines) log("stage '" + stage.name + "': " + line);
+}
+
+void Simulation::writeInitialOutput() {
+  initial_time_step_ = solver_->chooseTimeStep().time_step;
+  initial_output_written_ = true;
+  writeOutput();
+}
+
+void Simulation::writeProbes() {
+  if (!probes_) return;
+  probes_->write(solver_->time(), points_);
+  if (probes_->interval() > 0) {
+    while (next_probe_time_ <= solver_->time() * (1 + 1e-12))
+      next_probe_time_ += probes_->interval();
+  }
+}
+
+// ---------------------------------------------------------------- hydraulic boundary fluxes
+// <name>_boundary_flux.csv: at each output time, the liquid volume (m^3 per m thickness)
+// that entered the soil through each hydraulic condition in the last step and since the
+// start, the net inflow through all nodes, and the storage change of the points
+// (sum M_L - initial) / rho_L. Written only when some stage has hydraulic conditions.
+
+void Simulation::openBoundaryFluxLog() {
+  for (const auto& stage : deck_.stages)
+    for (const auto& boundary : stage.boundaries) {
+      const bool hydraulic = boundary.kind == BoundaryKind::TotalHead ||
+                             boundary.kind == BoundaryKind::PressureSeries ||
+                             boundary.kind == BoundaryKind::Infiltration ||
+                             boundary.kind == BoundaryKind::SeepageFace;
+      if (hydraulic &&
+          std::find(flux_names_.begin(), flux_names_.end(), boundary.name) == flux_names_.end())
+        flux_names_.push_back(boundary.name);
+    }
+  if (flux_names_.empty()) return;
+  flux_last_step_.assign(flux_names_.size(), 0.0);
+  flux_cumulative_.assign(flux_names_.size(), 0.0);
+  const auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points_.mass_liquid);
+  initial_liquid_mass_ = 0;
+  for (int p = 0; p < points_.count; ++p) initial_liquid_mass_ += mass(p);
+  std::vector<std::string> columns{"time", "storage_change", "net_inflow_all_nodes"};
+  for (const auto& name : flux_names_) {
+    columns.push_back(name + "_step");
+    columns.push_back(name + "_cumulative");
+  }
+  boundary_flux_ = std::make_unique<CsvWriter>(
+      options_.output_directory + "/" + deck_.output.name + "_boundary_flux.csv", columns);
+}
+
+void Simulation::accumulateBoundaryFluxes() {
+  if (!boundary_flux_) return;
+  std::fill(flux_last_step_.begin(), flux_last_step_.end(), 0.0);
+  const auto& conditions = solver_->hydraulicConditions().conditions();
+  const auto& volumes = solver_->boundaryFluxVolumes();
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const auto k = static_cast<std::size_t>(
+        std::find(flux_names_.begin(), flux_names_.end(), conditions[c].name) -
+        flux_names_.begin());
+    flux_last_step_[k] = volumes[c];
+    flux_cumulative_[k] += volumes[c];
+  }
+  if (!conditions.empty()) flux_all_nodes_cumulative_ += volumes[conditions.size()];
+}
+
+void Simulation::writeBoundaryFluxes() {
+  if (!boundary_flux_) return;
+  const Real mass =
+      solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass : initial_liquid_mass_;
+  std::vector<Real> row{solver_->time(),
+                        (mass - initial_liquid_mass_) / solver_->referenceLiquidDensity(),
+                        flux_all_nodes_cumulative_};
+  for (std::size_t k = 0; k < flux_names_.size(); ++k) {
+    row.push_back(flux_last_step_[k]);
+    row.push_back(flux_cumulative_[k]);
+  }
+  boundary_flux_->writeRow(row);
 }
 
 }  // namespace argine

@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/GridFields.hpp"
@@ -206,6 +207,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   const auto divergence_p = rates.liquid_divergence_increment_p;
   const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
   const auto displacement_increment_p = rates.displacement_increment_p;
+  const auto spin_increment_p = rates.spin_increment_p;
   Kokkos::parallel_for(
       "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -213,6 +215,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         if (shape.node[0] < 0) {
           for (int c = 0; c < kStressComponents; ++c) strain_increment_p(p, c) = 0;
           displacement_increment_p(p, 0) = displacement_increment_p(p, 1) = 0;
+          spin_increment_p(p) = 0;
           divergence_p(p) = 0;
           flux_divergence_p(p) = 0;
           return;
@@ -235,6 +238,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         strain_increment_p(p, YY) = dt * L[1][1];
         strain_increment_p(p, ZZ) = 0;                               // plane strain
         strain_increment_p(p, XY) = 0.5 * dt * (L[0][1] + L[1][0]);  // tensor shear
+        spin_increment_p(p) = spinIncrement(dt, L[0][1], L[1][0]);   // Jaumann rotation
         displacement_increment_p(p, 0) = dt * v[0];
         displacement_increment_p(p, 1) = dt * v[1];
 

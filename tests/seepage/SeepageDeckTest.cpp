@@ -21,12 +21,14 @@ TEST(SeepageDeck, V3DeckGivesTheImplicitSettingsAndBoundaryNodes) {
   EXPECT_EQ(stage.seepage.linear.preconditioner, "RILUK");
   EXPECT_EQ(stage.seepage.linear.tolerance, 1e-12);
   ASSERT_EQ(stage.boundaries.at(0).kind, BoundaryKind::Infiltration);
-  EXPECT_EQ(stage.boundaries.at(0).flux, 1e-4);
-  EXPECT_TRUE(stage.boundaries.at(0).ponding);
+  EXPECT_EQ(stage.boundaries.at(0).hydraulic.series.value, 1e-4);
+  EXPECT_FALSE(stage.boundaries.at(0).hydraulic.ponding);  // runs off at p_L = 0 (switchable)
 
   // The top of the 0.05 m wide column: two nodes, each with L/2 = 0.025 m, q L/2 = 2.5e-6 m2/s.
   const Mesh mesh = loadMesh(deck);
-  const SeepageBoundaryConditions conditions = seepageBoundaryConditions(mesh, stage);
+  const MaterialPoints points = seedPoints(deck, mesh);
+  const SeepageBoundaryConditions conditions =
+      seepageBoundaryPlan(mesh, points, stage).at(0.0, 1.0);
   ASSERT_EQ(conditions.supply_nodes.size(), 2u);
   for (std::size_t j = 0; j < 2; ++j) {
     EXPECT_NEAR(conditions.supplies[j], 2.5e-6, 1e-18);
@@ -41,8 +43,9 @@ TEST(SeepageDeck, MissingSideSetNamesTheCondition) {
   StageSpec stage = deck.stages.at(0);
   stage.boundaries.at(0).side_set = "crest";
   const Mesh mesh = loadMesh(deck);
+  const MaterialPoints points = seedPoints(deck, mesh);
   try {
-    seepageBoundaryConditions(mesh, stage);
+    seepageBoundaryPlan(mesh, points, stage);
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
     EXPECT_EQ(error.where(), "Stages/infiltration/Boundary Conditions/rain/Side Set");

@@ -6,6 +6,7 @@
 /// parameter lists, so nothing is looked up by name inside the time-step loop.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,7 @@ struct MaterialSpec {
   RetentionSpec retention;
   ConductivitySpec conductivity;
   InitialStateSpec initial;
+  LockingMitigationSpec locking;  ///< anti-locking averaging (`Locking Mitigation`)
 };
 
 // ---------------------------------------------------------------- implicit seepage (P5)
@@ -117,9 +119,56 @@ enum class BoundaryKind {
   LiquidFixity,    ///< zero relative liquid velocity (impermeable) on a side or node set
   Traction,        ///< total traction vector on a side set (Pa)
   LiquidPressure,  ///< prescribed liquid pressure on a side set (Pa)
-  Infiltration,    ///< implicit seepage: prescribed inflow (m/s) on a side set, ponding switch
-  SeepageFace,     ///< implicit seepage: potential seepage face on a side set
+  // Hydraulic conditions on the moving free boundary (thesis Sec. 4.1-4.3), see below.
+  TotalHead,       ///< total head H(t) (4.50) on a zone of the free boundary or a side set
+  PressureSeries,  ///< prescribed liquid pressure p(t) on a zone or a side set
+  Infiltration,    ///< prescribed infiltration flux q(t) (Sec. 4.2); negative: evaporation
+  SeepageFace,     ///< potential seepage face (Sec. 4.3)
 };
+
+// ---------------------------------------------------------------- hydraulic conditions (P3)
+// Plain deck data of the conditions on the moving free boundary; resolved by the boundary
+// room (boundary/TimeSeries.hpp, boundary/Zone.hpp, boundary/HydraulicConditions.hpp).
+
+/// A region of the plane where a condition applies on the current free boundary.
+struct ZoneSpec {
+  enum class Kind { Everywhere, HalfPlane, Box, PolylineBand } kind = Kind::Everywhere;
+  std::array<Real, 2> point{0.0, 0.0};        ///< half-plane: a point on its edge (m)
+  std::array<Real, 2> direction{0.0, 1.0};    ///< half-plane: pointing into the zone
+  std::array<Real, 2> lower_left{0.0, 0.0};   ///< box (m)
+  std::array<Real, 2> upper_right{0.0, 0.0};  ///< box (m)
+  std::vector<std::array<Real, 2>> vertices;  ///< polyline band (m)
+  Real width = 0;                             ///< polyline band half-width (m)
+};
+
+/// A time-dependent value as written in the deck: a constant, an inline table of pairs
+/// (t, v), or a CSV file; `where` is the key path for error messages.
+struct TimeSeriesSpec {
+  enum class Source { Constant, Table, File } source = Source::Constant;
+  Real value = 0;           ///< Constant (SI)
+  std::vector<Real> pairs;  ///< Table: t0, v0, t1, v1, ... (s, SI)
+  std::string file;         ///< File: absolute path of the two-column CSV
+  std::string where;        ///< deck key path of the value
+};
+
+/// What a total-head condition does on the free boundary above the current level (Sec. 4.1).
+enum class AboveLevel {
+  ConstantPressure,  ///< p_L = Pressure Above Level (Pa), default 0
+  LinearSuction,     ///< p_L = rho_L g (H - y) < 0: hydrostatic suction
+  SeepageFace,       ///< potential seepage face (Sec. 4.3)
+};
+
+/// Parameters of the hydraulic kinds (TotalHead, PressureSeries, Infiltration, SeepageFace).
+struct HydraulicSpec {
+  bool on_zone = false;  ///< true: the zone on the free boundary; false: BoundarySpec::side_set
+  ZoneSpec zone;
+  TimeSeriesSpec series;  ///< head (m), pressure (Pa) or flux (m/s, infiltration positive)
+  AboveLevel above = AboveLevel::ConstantPressure;
+  Real pressure_above = 0;  ///< (Pa) for AboveLevel::ConstantPressure
+  bool ponding = false;     ///< infiltration: rain that cannot infiltrate ponds (true) or runs off
+  Real liquid_density = 1000;  ///< rho_L of the head-pressure conversion (kg/m^3)
+};
+// ---------------------------------------------------------------- end hydraulic conditions
 
 struct BoundarySpec {
   std::string name;
@@ -130,11 +179,37 @@ struct BoundarySpec {
   bool fix_y = false;
   std::array<Real, 2> traction{0.0, 0.0};  ///< (Pa), tension positive along the outward normal
   Real pressure = 0;                       ///< prescribed p_L (Pa, compression positive)
-  // implicit seepage (P5) kinds: Infiltration (flux on a side set, ponding switch) and
-  // SeepageFace (potential seepage face on a side set)
-  Real flux = 0;        ///< Infiltration: inflow normal to the surface (m/s), >= 0
-  bool ponding = true;  ///< Infiltration: switch to p_L = 0 when the surface saturates
+  HydraulicSpec hydraulic;                 ///< TotalHead, PressureSeries, Infiltration, ...
 };
+
+// ---- stages: relaxation and material changes (issue P4) ----
+
+/// Ends a stage early once it is quasi-static: the largest kinetic energy over the last
+/// `window` seconds, divided by the stored elastic energy, is below
+/// `kinetic_energy_ratio` (simulation/RelaxationMonitor.hpp). The window keeps an
+/// oscillation's turning point (kinetic energy momentarily ~0) from passing for rest.
+/// Duration stays the maximum.
+struct RelaxationSpec {
+  bool enabled = false;
+  Real kinetic_energy_ratio = 1e-4;  ///< tolerance (-)
+  Real window = 0.1;                 ///< (s) time the ratio must stay low
+};
+
+/// New values of some parameters of one material, applied when the stage starts (e.g. the
+/// cohesion falling from 20 to 2 kPa). Unset values keep the material's current ones.
+struct MaterialChangeSpec {
+  std::string material;                        ///< material name (Materials/<name>)
+  std::optional<Real> youngs_modulus;          ///< (Pa)
+  std::optional<Real> poisson_ratio;           ///< (-)
+  std::optional<Real> cohesion;                ///< (Pa)
+  std::optional<Real> friction_angle;          ///< (rad)
+  std::optional<Real> dilatancy_angle;         ///< (rad)
+  std::optional<Real> tensile_strength;        ///< (Pa)
+  std::optional<Real> intrinsic_permeability;  ///< kappa (m2)
+  std::optional<Real> saturated_conductivity;  ///< k_sat (m/s)
+};
+
+// ---- end of issue P4 stage additions ----
 
 struct StageSpec {
   std::string name;
@@ -147,7 +222,52 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
-  ImplicitSeepageSpec seepage;  ///< used by `implicit seepage` stages only
+  ImplicitSeepageSpec seepage;                       ///< used by `implicit seepage` stages only
+  RelaxationSpec relaxation;                         ///< optional early end (issue P4)
+  std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
+};
+
+// ---------------------------------------------------------------- initialisation (P4)
+
+/// How the points' initial stress and liquid pressure are set before the first stage.
+///   Uniform: each material's Initial State (uniform p_L and sigma'_yy); gravity loading is
+///            this followed by a (quasi-static) stage with gravity.
+///   K0Procedure: thesis Ch. 4 Sec. 5.1 (Figs. 4.6-4.7): hydrostatic p_L under a phreatic
+///            surface (capped suction above it), sigma_yy from the unit weight of the layers
+///            between the ground surface and the point, Bishop sigma'_yy, sigma'_xx = K0
+///            sigma'_yy with each material's Initial State K0 (init/K0Procedure.hpp).
+struct InitialisationSpec {
+  enum class Method { Uniform, K0Procedure } method = Method::Uniform;
+  std::vector<std::array<Real, 2>> ground_surface;    ///< (x, y) vertices, x increasing (m)
+  std::vector<std::array<Real, 2>> phreatic_surface;  ///< (m); empty: each material's uniform p_L
+  Real max_suction = -1;                              ///< (Pa); < 0: no cap (Fig. 4.7 b)
+};
+
+// ---------------------------------------------------------------- probes (P4)
+
+/// A material point followed through the run: the point nearest to `position` at the start.
+struct PointProbeSpec {
+  std::string name;
+  std::array<Real, 2> position{0.0, 0.0};  ///< initial position sought (m)
+  Real tolerance = 0;                      ///< the nearest point must lie this close (m)
+};
+
+/// A line segment through the soil: either every point within `band_width`/2 of it (Band),
+/// or p_L and S_L interpolated at `samples` equidistant positions on it (Profile).
+struct SectionProbeSpec {
+  enum class Kind { Band, Profile } kind = Kind::Profile;
+  std::string name;
+  std::array<Real, 2> from{0.0, 0.0};  ///< (m)
+  std::array<Real, 2> to{0.0, 0.0};    ///< (m)
+  Real band_width = 0;                 ///< (m) band width; for a profile the averaging radius
+  int samples = 10;                    ///< Profile: number of sample positions
+};
+
+struct ProbesSpec {
+  Real interval = 0;  ///< (s) between probe rows; 0: at every output
+  std::vector<PointProbeSpec> points;
+  std::vector<SectionProbeSpec> sections;
+  bool empty() const { return points.empty() && sections.empty(); }
 };
 
 // ---------------------------------------------------------------- whole deck
@@ -164,6 +284,8 @@ struct Deck {
   std::vector<MaterialSpec> materials;
   std::vector<StageSpec> stages;  ///< in the order written in the deck
   OutputSpec output;
+  InitialisationSpec initialisation;  ///< (P4)
+  ProbesSpec probes;                  ///< (P4)
 };
 
 }  // namespace argine

@@ -38,6 +38,12 @@ inline constexpr DeckWord<SolidModel> kSolidModelWords[] = {
     {"suction Mohr-Coulomb", SolidModel::SuctionMohrCoulomb},
 };
 
+inline constexpr DeckWord<IncrementAveraging> kIncrementAveragingWords[] = {
+    {"none", IncrementAveraging::None},
+    {"element", IncrementAveraging::Element},
+    {"nodal", IncrementAveraging::Nodal},
+};
+
 inline constexpr DeckWord<RetentionModel> kRetentionModelWords[] = {
     {"linear", RetentionModel::Linear},
     {"van Genuchten", RetentionModel::VanGenuchten},
@@ -72,8 +78,21 @@ inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
 inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
     {"solid fixity", BoundaryKind::SolidFixity},  {"impermeable", BoundaryKind::LiquidFixity},
     {"traction", BoundaryKind::Traction},         {"liquid pressure", BoundaryKind::LiquidPressure},
-    {"infiltration", BoundaryKind::Infiltration},  // implicit seepage (P5)
-    {"seepage face", BoundaryKind::SeepageFace},   // implicit seepage (P5)
+    {"total head", BoundaryKind::TotalHead},      {"pressure series", BoundaryKind::PressureSeries},
+    {"infiltration", BoundaryKind::Infiltration}, {"seepage face", BoundaryKind::SeepageFace},
+};
+
+inline constexpr DeckWord<ZoneSpec::Kind> kZoneWords[] = {
+    {"everywhere", ZoneSpec::Kind::Everywhere},
+    {"half-plane", ZoneSpec::Kind::HalfPlane},
+    {"box", ZoneSpec::Kind::Box},
+    {"polyline band", ZoneSpec::Kind::PolylineBand},
+};
+
+inline constexpr DeckWord<AboveLevel> kAboveLevelWords[] = {
+    {"constant pressure", AboveLevel::ConstantPressure},
+    {"linear suction", AboveLevel::LinearSuction},
+    {"seepage face", AboveLevel::SeepageFace},
 };
 
 inline constexpr DeckWord<ElementType> kElementWords[] = {
@@ -102,6 +121,18 @@ inline constexpr DeckWord<bool> kTimeStepModeWords[] = {
     {"automatic", true},
     {"fixed", false},
 };
+
+// ---- issue P4: initialisation and probes ----
+inline constexpr DeckWord<InitialisationSpec::Method> kInitialisationWords[] = {
+    {"uniform", InitialisationSpec::Method::Uniform},
+    {"K0 procedure", InitialisationSpec::Method::K0Procedure},
+};
+
+inline constexpr DeckWord<SectionProbeSpec::Kind> kSectionWords[] = {
+    {"band", SectionProbeSpec::Kind::Band},
+    {"profile", SectionProbeSpec::Kind::Profile},
+};
+// ---- end of issue P4 words ----
 
 /// All words of a table, in table order (for the schema and messages).
 template <class Enum, std::size_t N>

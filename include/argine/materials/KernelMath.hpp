@@ -23,6 +23,12 @@ KOKKOS_INLINE_FUNCTION Real log(Real x) {
 KOKKOS_INLINE_FUNCTION Real pow(Real x, Real y) {
   return Kokkos::Experimental::pow(x, y);
 }
+KOKKOS_INLINE_FUNCTION Real sin(Real x) {
+  return Kokkos::Experimental::sin(x);
+}
+KOKKOS_INLINE_FUNCTION Real cos(Real x) {
+  return Kokkos::Experimental::cos(x);
+}
 KOKKOS_INLINE_FUNCTION Real fabs(Real x) {
   return Kokkos::Experimental::fabs(x);
 }

@@ -12,21 +12,32 @@ enum class SolidModel { LinearElastic, MohrCoulomb, SuctionMohrCoulomb };
 enum class RetentionModel { Linear, VanGenuchten, Gardner };
 enum class ConductivityModel { Constant, Hillel, Mualem, Gardner };
 enum class MassBalanceForm { Complete, Simplified };  ///< Eq. 4.12 or Eq. 4.14
+/// Anti-locking averaging of a point quantity's increment (physics/VolumetricAveraging.hpp):
+/// none, over the points of the element (MPM-MIXED style), or through the nodes (nodal mixed
+/// discretisation).
+enum class IncrementAveraging { None, Element, Nodal };
 
 struct SolidSpec {
   SolidModel model = SolidModel::LinearElastic;
-  Real youngs_modulus = 0;    ///< E (Pa)
-  Real poisson_ratio = 0;     ///< nu (-)
-  Real cohesion = 0;          ///< c' (Pa)
-  Real friction_angle = 0;    ///< phi' (rad; the deck gives degrees)
-  Real dilatancy_angle = 0;   ///< psi (rad; the deck gives degrees)
-  Real tensile_strength = 0;  ///< tension cut-off (Pa)
+  Real youngs_modulus = 0;     ///< E (Pa)
+  Real poisson_ratio = 0;      ///< nu (-)
+  Real cohesion = 0;           ///< c' (Pa)
+  Real friction_angle = 0;     ///< phi' (rad; the deck gives degrees)
+  Real dilatancy_angle = 0;    ///< psi (rad; the deck gives degrees)
+  Real tensile_strength = 0;   ///< tension cut-off sigma_1 <= tensile_strength (Pa)
+  bool tension_cutoff = true;  ///< whether the cut-off applies (MohrCoulomb.hpp)
   // Suction-dependent Mohr-Coulomb (4.23-4.26): c = c' + dc_max (1 - exp(-B s/p_atm)),
   // phi = phi' + A s / p_atm.
   Real cohesion_increase_max = 0;        ///< dc_max (Pa)
   Real cohesion_suction_rate = 0;        ///< B (-)
   Real friction_suction_rate = 0;        ///< A (rad)
   Real atmospheric_pressure = 101325.0;  ///< p_atm (Pa)
+};
+
+/// Volumetric-locking / cell-crossing mitigation of a material.
+struct LockingMitigationSpec {
+  IncrementAveraging volumetric_strain = IncrementAveraging::None;  ///< d eps_vol of the solid
+  IncrementAveraging liquid_pressure = IncrementAveraging::None;    ///< d p_L (saturated points)
 };
 
 struct LiquidSpec {

@@ -5,36 +5,33 @@
 /// switch on SolidSpec::model (no virtual calls in kernels), and the suction-dependent
 /// strength parameters of Eqs. 4.23-4.26.
 ///
-/// Status: LinearElastic is implemented. MohrCoulomb and SuctionMohrCoulomb are not yet
-/// (later issue). They must not silently behave elastically, so:
-///  - the input layer calls isImplemented(model) and rejects a deck that needs a missing
-///    model before the run (InputError naming "Materials/<name>/Solid/Model");
-///  - if a kernel still reaches updateEffectiveStress() with such a model, the function
-///    returns false, sets plastic_state = kPlasticStateUnsupported and fills the stress
-///    with NaN, so the run's non-finite check stops with the point's id.
+/// All three models are implemented: LinearElastic (LinearElastic.hpp), MohrCoulomb and
+/// SuctionMohrCoulomb (MohrCoulomb.hpp; the latter with c and phi of Eqs. 4.23-4.26 at the
+/// point's current suction). The objective (Jaumann) rotation of the stress is applied by
+/// the caller before this update (ObjectiveStressRate.hpp, physics/PointUpdates.hpp).
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/LinearElastic.hpp"
 #include "argine/materials/MaterialParameters.hpp"
+#include "argine/materials/MohrCoulomb.hpp"
 
 namespace argine {
 
 /// plastic_state values (points/MaterialPoints.hpp: 0 elastic, 1 plastic, 2 apex).
-inline constexpr int kPlasticStateElastic = 0;
-inline constexpr int kPlasticStatePlastic = 1;
-inline constexpr int kPlasticStateApex = 2;
-/// The point's model has no stress update yet (see file comment).
+inline constexpr int kPlasticStateElastic = kMohrCoulombElastic;
+inline constexpr int kPlasticStatePlastic = kMohrCoulombSurface;  ///< plane, edge, cut-off
+inline constexpr int kPlasticStateApex = kMohrCoulombApex;
+/// A model without a stress update (none at present; kept for models added later).
 inline constexpr int kPlasticStateUnsupported = -1;
 
 /// Whether updateEffectiveStress() implements `model`.
 KOKKOS_INLINE_FUNCTION constexpr bool isImplemented(SolidModel model) {
   switch (model) {
     case SolidModel::LinearElastic:
-      return true;
     case SolidModel::MohrCoulomb:
     case SolidModel::SuctionMohrCoulomb:
-      return false;
+      return true;
   }
   return false;
 }
@@ -54,16 +51,31 @@ KOKKOS_INLINE_FUNCTION Real suctionDependentFriction(const SolidSpec& spec, Real
   return spec.friction_angle + spec.friction_suction_rate * suction / spec.atmospheric_pressure;
 }
 
+/// The Mohr-Coulomb strength of `spec` at suction s (Pa): c', phi' for MohrCoulomb, c(s) and
+/// phi(s) of Eqs. 4.23-4.26 for SuctionMohrCoulomb; psi and the cut-off as given.
+KOKKOS_INLINE_FUNCTION MohrCoulombStrength mohrCoulombStrength(const SolidSpec& spec,
+                                                               Real suction) {
+  MohrCoulombStrength strength;
+  const bool suction_dependent = spec.model == SolidModel::SuctionMohrCoulomb;
+  strength.cohesion = suction_dependent ? suctionDependentCohesion(spec, suction) : spec.cohesion;
+  strength.friction_angle =
+      suction_dependent ? suctionDependentFriction(spec, suction) : spec.friction_angle;
+  strength.dilatancy_angle = spec.dilatancy_angle;
+  strength.tensile_strength = spec.tensile_strength;
+  strength.tension_cutoff = spec.tension_cutoff;
+  return strength;
+}
+
 /// Update the Bishop effective stress (Pa, tension positive; xx, yy, zz, xy) of one point
 /// by the strain increment dstrain (tensor shear in [3], see LinearElastic.hpp). `suction`
-/// (Pa, s = -p_L) feeds the suction-dependent models. Returns false, with NaN stress and
-/// plastic_state = kPlasticStateUnsupported, for a model that is not implemented.
+/// (Pa, s = -p_L) feeds the suction-dependent model. Sets plastic_state (0 elastic, 1
+/// plastic on a plane/edge/cut-off, 2 apex) and adds the equivalent plastic strain of the
+/// increment to plastic_strain. Returns false (NaN stress, kPlasticStateUnsupported) only
+/// for a model without an update.
 KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec, Real suction,
                                                   const Real dstrain[kStressComponents],
                                                   Real stress[kStressComponents],
                                                   Real& plastic_strain, int& plastic_state) {
-  (void)suction;         // used by the Mohr-Coulomb models (later issue)
-  (void)plastic_strain;  // unchanged by elasticity
   switch (spec.model) {
     case SolidModel::LinearElastic: {
       Real dstress[kStressComponents];
@@ -74,7 +86,9 @@ KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec, Real su
     }
     case SolidModel::MohrCoulomb:
     case SolidModel::SuctionMohrCoulomb:
-      break;
+      plastic_state = mohrCoulombStressUpdate(spec, mohrCoulombStrength(spec, suction), dstrain,
+                                              stress, plastic_strain);
+      return true;
   }
   for (int i = 0; i < kStressComponents; ++i) stress[i] = kmath::quietNaN();
   plastic_state = kPlasticStateUnsupported;

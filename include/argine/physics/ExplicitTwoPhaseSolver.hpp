@@ -5,19 +5,28 @@
 /// liquid; the liquid moves relative to the solid. `step(dt)` reads as the algorithm:
 ///
 ///   mapMassesMomentaAndForces   P2G at t^k: masses 4.38-4.40, drag 4.45, forces 4.41-4.44
+///   applyHydraulicLoads         moving boundary (Sec. 4): detectFreeBoundary (Fig. 4.4, when
+///                               a point changed element), normals 4.51, head (4.50) and
+///                               pressure loads into f_L^ext and f^ext
 ///   solveLiquidMomentum         step 1: a_L from 4.36
 ///   solveMixtureMomentum        step 2: a_S from 4.37
 ///   applyAccelerationBoundaryConditions   fixities, impermeable boundaries
+///   correctHydraulicAccelerations   infiltration / seepage face predictor-corrector
+///                               (4.53-4.59)
 ///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11), and the remap of the
 ///                               new point momenta to the nodes, in one pass
-///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs
-///   computeStrainIncrements     step 4: d eps, div v_L, advective term at the points
+///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs, the
+///                               infiltration / seepage corrections re-imposed
+///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
+///                               volumetric averaging of d eps if a material asks for it
+///   accountBoundaryFluxes       liquid volume through each hydraulic condition
 ///   updatePointStates           steps 5-7 in one pass over the points, per point:
 ///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
 ///     updateLiquidPressure      step 5: mass balance 4.12 (or 4.14), conservative form
 ///     updateEffectiveStress     step 5: sigma' (4.22), Bishop chi = S_L (4.5)
 ///     updateLiquidState         step 6: S_L (SWRC), k (HCC)
 ///     updatePointPosition       step 7: x += dt sum N v_S^{k+1} (7.13)
+///   (averaging of d p_L at saturated points if a material asks for it, VolumetricAveraging)
 ///   relocatePoints              step 8: grid discarded, points re-located for t^{k+1}
 ///   sortPoints                  every sortInterval() steps (if set): points by element
 ///   checkStability              non-finite values or runaway kinetic energy -> RunError
@@ -48,13 +57,17 @@
 #include <vector>
 
 #include "argine/boundary/BoundaryConditions.hpp"
+#include "argine/boundary/FreeBoundary.hpp"
+#include "argine/boundary/HydraulicConditions.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
+#include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/StepProfile.hpp"
 #include "argine/physics/TimeStepControl.hpp"
+#include "argine/physics/VolumetricAveraging.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/GridFields.hpp"
@@ -131,6 +144,21 @@ class ExplicitTwoPhaseSolver {
   /// The current stage's resolved boundary conditions.
   const StageBoundaryConditions& boundaryConditions() const { return boundaries_; }
 
+  // ---- hydraulic conditions on the moving boundary (Sec. 4.1-4.3)
+  /// The free boundary of the last step (detected only while the stage has hydraulic
+  /// conditions).
+  const FreeBoundary& freeBoundary() const { return free_boundary_; }
+  /// The current stage's hydraulic conditions (last step's plan).
+  const HydraulicConditions& hydraulicConditions() const { return hydraulic_; }
+  /// Liquid volume (m^3 per m thickness, mass / reference rho_L) that ENTERED the soil in
+  /// the last step through each hydraulic condition, in hydraulicConditions() order; the
+  /// entry after them is the net inflow through all nodes (= the storage change).
+  const std::vector<Real>& boundaryFluxVolumes() const { return boundary_flux_volumes_; }
+  /// rho_L converting liquid masses to volumes: that of the first liquid-carrying material.
+  Real referenceLiquidDensity() const { return reference_liquid_density_; }
+  /// The nodal fields of the hydraulic conditions of the last step (4.51, n_L, G_i).
+  const BoundaryGradientFields& boundaryGradients() const { return boundary_fields_; }
+
   /// The kinetic energy may not exceed this factor times the energy scale of the stage
   /// ((weight + boundary loads) x mesh size + stored elastic energy + initial kinetic energy,
   /// see StabilityCheck.hpp). Default 10.
@@ -156,12 +184,16 @@ class ExplicitTwoPhaseSolver {
  private:
   // The steps of Sec. 3.3, in order.
   void mapMassesMomentaAndForces();
+  void applyHydraulicLoads();
+  void detectFreeBoundary();
   void solveLiquidMomentum();
   void solveMixtureMomentum();
   void applyAccelerationBoundaryConditions();
+  void correctHydraulicAccelerations(Real dt);
   void updatePointVelocities(Real dt);
   void updateNodalVelocities();
   void computeStrainIncrements(Real dt);
+  void accountBoundaryFluxes(Real dt);
   void updatePointStates();
   void relocatePoints();
   void sortPoints();
@@ -179,6 +211,13 @@ class ExplicitTwoPhaseSolver {
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)
   StageBoundaryConditions boundaries_;
+  FreeBoundary free_boundary_;
+  HydraulicConditions hydraulic_;
+  BoundaryGradientFields boundary_fields_;
+  bool free_boundary_stale_ = true;  ///< a point changed element since the last detection
+  std::vector<Real> boundary_flux_volumes_;
+  Real reference_liquid_density_ = 1000;
+  VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   Real gravity_ = 0;

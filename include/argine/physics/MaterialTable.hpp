@@ -21,7 +21,8 @@ struct PointMaterial {
   LiquidSpec liquid;                                         ///< rho_L0, K_L, mu_L
   RetentionSpec retention;                                   ///< SWRC (unsaturated only)
   ConductivitySpec conductivity;                             ///< HCC (k_sat filled)
-  Real constrained_modulus = 0;  ///< E_c = constrainedModulus(solid) (Pa), once per material
+  Real constrained_modulus = 0;   ///< E_c = constrainedModulus(solid) (Pa), once per material
+  LockingMitigationSpec locking;  ///< anti-locking averaging (VolumetricAveraging.hpp)
 };
 
 /// Whether points of this phase model carry liquid (mass, pressure, velocity).

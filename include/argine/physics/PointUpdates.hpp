@@ -7,6 +7,7 @@
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
+#include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/materials/SolidModel.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -75,9 +76,11 @@ KOKKOS_INLINE_FUNCTION Real equivalentDeviatoricStrain(const Real e[kStressCompo
   return kmath::sqrt(2.0 / 3.0 * (dxx * dxx + dyy * dyy + dzz * dzz + 2 * e[XY] * e[XY]));
 }
 
-/// Step 5, constitutive update: sigma' += D d eps (4.22) with the point's solid model and
-/// current suction (Bishop's chi = S_L enters the total stress in the P2G, 4.5); accumulates
-/// the total strain and the equivalent deviatoric strain.
+/// Step 5, constitutive update: the Jaumann rotation of sigma' by the step's spin
+/// (ObjectiveStressRate.hpp), then sigma' += D d eps (4.22) or the Mohr-Coulomb return with
+/// the point's solid model and current suction (Bishop's chi = S_L enters the total stress
+/// in the P2G, 4.5); accumulates the total strain, the equivalent deviatoric strain and the
+/// equivalent plastic strain, and sets the plastic state.
 KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int p) {
   const PointMaterial& material = v.materials_m(v.points.material(p));
   const Real suction =
@@ -88,6 +91,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
     stress[c] = v.points.stress_effective(p, c);
     strain[c] = v.points.strain(p, c) + dstrain[c];
   }
+  rotateStressBySpin(v.rates.spin_increment_p(p), stress);
   Real plastic_strain = v.points.plastic_strain(p);
   int plastic_state = v.points.plastic_state(p);
   updateEffectiveStress(material.solid, suction, dstrain, stress, plastic_strain, plastic_state);

@@ -71,6 +71,11 @@ int mostEnergeticPoint(const MaterialPoints& points);
 /// first non-finite value of the point (host copy of that point only).
 std::string describePoint(const MaterialPoints& points, int index, bool non_finite);
 
+/// The stored elastic energy (J per m), a scale estimate: sum V |sigma'|^2 / (2 E) over the
+/// points plus, where there is liquid, sum V n p_L^2 / (2 K_L). Also the reference of a
+/// stage's relaxation test (simulation/RelaxationMonitor.hpp).
+Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& table);
+
 /// A load-and-stored-energy scale of the current state (J per m): (weight + boundary loads)
 /// times `size` (the extent of the background mesh: nothing falls or is pushed further), the
 /// elastic energy of the effective stress and of the liquid pressure, and the kinetic energy.

@@ -65,13 +65,18 @@ class ImplicitSeepageSolver {
   ImplicitSeepageSolver(const ImplicitSeepageSolver&) = delete;
   ImplicitSeepageSolver& operator=(const ImplicitSeepageSolver&) = delete;
 
-  /// Starts a stage: its settings, gravity and boundary conditions (seepageBoundaryConditions),
+  /// Starts a stage: its settings, gravity and boundary conditions (seepageBoundaryPlan on the
+  /// points' elements now),
   /// the nodal p_L from the points (projectPressureFromPoints).
   void beginStage(const StageSpec& stage);
 
   void setSettings(const ImplicitSeepageSpec& settings);
   void setGravity(Real gravity);  ///< magnitude (m/s^2), acting in -y
+  /// Fixed conditions for every step (replaces a plan).
   void setBoundaryConditions(const SeepageBoundaryConditions& conditions);
+  /// Conditions re-evaluated for every step: plan.at(t_n, t_n+1, theta) (values at the end of
+  /// the step; supplies theta-weighted).
+  void setBoundaryPlan(const SeepageBoundaryPlan& plan);
   /// Nodal p_L = the L2 projection of the points' p_L (sum_p V N_a N_b p_b = sum_p V N_a
   /// p_p): exact for a linear field, e.g. hydrostatic.
   void projectPressureFromPoints();

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "argine/input/Deck.hpp"
 #include "argine/mesh/Mesh.hpp"
@@ -18,6 +19,7 @@ struct TimeStepChoice;
 class ResultsWriter;
 class CsvWriter;
 class ProgressReporter;
+class ProbeWriter;
 
 /// Options of `argine run` that are not part of the deck.
 struct RunOptions {
@@ -52,6 +54,11 @@ class Simulation {
   std::string gridPath() const;
   /// Path of the current points results file (valid after run() started).
   std::string pointsPath() const;
+  /// What the run logged about initialisation and stages (material changes, relaxation),
+  /// in order; also printed unless quiet.
+  const std::vector<std::string>& stageLog() const { return stage_log_; }
+  /// The materials as they are now (after the material changes of the stages run so far).
+  const std::vector<MaterialSpec>& currentMaterials() const { return deck_.materials; }
 
  private:
   void runStage(const StageSpec& stage);
@@ -59,6 +66,15 @@ class Simulation {
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   void writeOutput();
   void writeDiagnostics();
+  // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
+  void openBoundaryFluxLog();
+  void accumulateBoundaryFluxes();
+  void writeBoundaryFluxes();
+  // issue P4: stage additions, probes
+  void log(const std::string& line);
+  void applyStageMaterialChanges(const StageSpec& stage);
+  void writeInitialOutput();
+  void writeProbes();
 
   Deck deck_;
   RunOptions options_;
@@ -68,6 +84,17 @@ class Simulation {
   std::unique_ptr<ResultsWriter> results_;
   std::unique_ptr<CsvWriter> diagnostics_;
   std::unique_ptr<ProgressReporter> progress_;
+  std::unique_ptr<CsvWriter> boundary_flux_;  ///< only when a stage has hydraulic conditions
+  std::vector<std::string> flux_names_;       ///< hydraulic conditions of all stages
+  std::vector<Real> flux_last_step_;          ///< m^3/m through each, last step
+  std::vector<Real> flux_cumulative_;         ///< m^3/m through each since the start
+  Real flux_all_nodes_cumulative_ = 0;        ///< net inflow through all nodes (m^3/m)
+  Real initial_liquid_mass_ = 0;              ///< sum of the points' M_L at the start (kg/m)
+  std::unique_ptr<ProbeWriter> probes_;       ///< (P4)
+  std::vector<std::string> stage_log_;        ///< (P4)
+  bool initial_output_written_ = false;       ///< (P4) t = 0 written after the first beginStage
+  Real next_probe_time_ = 0;                  ///< (P4)
+  Real initial_time_step_ = 0;  ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
 };
 

@@ -20,6 +20,9 @@ struct PointRates {
   /// advective-gradient term of 4.15-4.16.
   View<Real*> content_flux_divergence_increment_p;
   View<Real* [kDim]> displacement_increment_p;  ///< dt v_S at the point (m), 7.13
+  /// Spin increment w = dt (dv_S,x/dy - dv_S,y/dx) / 2 (rad) of the solid: the Jaumann
+  /// rotation of the stress (materials/ObjectiveStressRate.hpp).
+  View<Real*> spin_increment_p;
 
   /// Allocate for n points.
   void allocate(int n);

@@ -56,6 +56,7 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  MaterialPoints& points, GridFields& grid);
 
 /// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
+/// spin increment dt skew(grad v_S) (the Jaumann rotation, ObjectiveStressRate.hpp),
 /// dt div v_L and the liquid flux divergence dt div(c w), c = rho_L n S_L, w = v_L - v_S, at
 /// the liquid-carrying points (4.11-4.12 with the advective-gradient term 4.15-4.16; c from
 /// the nodal liquid content), and

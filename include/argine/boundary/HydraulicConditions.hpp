@@ -1,0 +1,100 @@
+#pragma once
+/// @file HydraulicConditions.hpp
+/// The hydraulic conditions of a stage on the MOVING free boundary (thesis Sec. 4.1-4.3):
+/// total head, pressure series, infiltration/evaporation and potential seepage face. Each
+/// applies on a zone of the current free boundary (FreeBoundary, tested at side midpoints)
+/// or on a mesh side set (sides of active elements only). Every step, plan() turns them
+/// into device lists for the solver's kernels:
+///  - nodal loads: the pressure integrated along the condition's sides (HydraulicAlgebra),
+///    added to BOTH the liquid (4.41) and the mixture (4.42) external forces, so the water
+///    weight acts on the slope;
+///  - nodal corrections: infiltration (flux q_in = -q_out) and seepage-face nodes, corrected
+///    by the predictor-corrector (4.53-4.59) in the solver;
+///  - ownership: each node of a condition's sides belongs to the first condition (deck
+///    order) that claims it, for the liquid volume each condition lets through.
+/// Host loops over the boundary sides only (boundary-sized), a few small copies per step.
+
+#include <string>
+#include <vector>
+
+#include "argine/boundary/BoundaryConditions.hpp"
+#include "argine/boundary/FreeBoundary.hpp"
+#include "argine/boundary/HydraulicAlgebra.hpp"
+#include "argine/boundary/TimeSeries.hpp"
+#include "argine/boundary/Zone.hpp"
+#include "argine/input/Deck.hpp"
+
+namespace argine {
+
+/// One resolved hydraulic condition.
+struct HydraulicCondition {
+  std::string name;
+  BoundaryKind kind = BoundaryKind::TotalHead;
+  bool on_zone = true;                       ///< zone on the free boundary, else side_set
+  Zone zone;                                 ///< where, when on_zone
+  std::vector<std::array<int, 2>> side_set;  ///< (element, local side), when !on_zone
+  TimeSeries series;                         ///< head (m), pressure (Pa) or infiltration flux (m/s)
+  AboveLevel above = AboveLevel::ConstantPressure;
+  Real pressure_above = 0;     ///< (Pa)
+  bool ponding = false;        ///< infiltration
+  Real liquid_density = 1000;  ///< head -> pressure (kg/m^3)
+};
+
+/// Resolves the time series of a deck spec (reads a CSV file; InputError(spec.where)).
+TimeSeries makeTimeSeries(const TimeSeriesSpec& spec);
+
+/// Device lists of one step's nodal corrections (see HydraulicAlgebra: FluxCorrection).
+struct FluxCorrectionList {
+  Kokkos::View<int*, MemSpace> node;    ///< mesh node
+  Kokkos::View<int*, MemSpace> kind;    ///< FluxCorrection as int
+  Kokkos::View<Real*, MemSpace> q_out;  ///< prescribed outward relative flux w^ . n (m/s)
+  /// Outward unit normal of the correcting condition's own sides at the node: the sum of
+  /// n L / 2 over them, normalised (HydraulicBoundaryStep.hpp says why not 4.51 here).
+  Kokkos::View<Real* [kDim], MemSpace> normal;
+  Kokkos::View<int*, MemSpace> applied;  ///< 1 where the correction applied this step
+  int count() const { return static_cast<int>(node.extent(0)); }
+};
+
+/// Which condition each node of the conditions' sides belongs to.
+struct NodeOwnership {
+  Kokkos::View<int*, MemSpace> node;   ///< mesh node
+  Kokkos::View<int*, MemSpace> owner;  ///< index into conditions()
+  int count() const { return static_cast<int>(node.extent(0)); }
+};
+
+class HydraulicConditions {
+ public:
+  HydraulicConditions() = default;
+  /// The hydraulic conditions of `stage` (others are ignored); InputError with where =
+  /// "Stages/<stage>/Boundary Conditions/<name>" for a missing side set, or the time-series
+  /// key for an unreadable file.
+  HydraulicConditions(const Mesh& mesh, const StageSpec& stage);
+
+  bool empty() const { return conditions_.empty(); }
+  const std::vector<HydraulicCondition>& conditions() const { return conditions_; }
+
+  /// Builds this step's loads, corrections and ownership from the current free boundary at
+  /// `time` (s); `gravity` (m/s^2) converts heads to pressures.
+  void plan(Real time, Real gravity, const FreeBoundary& boundary);
+
+  const NodalLoads& loads() const { return loads_; }
+  const FluxCorrectionList& corrections() const { return corrections_; }
+  const NodeOwnership& ownership() const { return ownership_; }
+  /// The sides each condition used in the last plan (host copies, for tests and plots).
+  const std::vector<std::vector<FreeSide>>& sidesUsed() const { return sides_used_; }
+  /// The value of each condition's time series at the last plan's time.
+  const std::vector<Real>& currentValues() const { return current_values_; }
+
+ private:
+  std::vector<FreeSide> sidesOf(const HydraulicCondition& condition,
+                                const FreeBoundary& boundary) const;
+
+  std::vector<HydraulicCondition> conditions_;
+  NodalLoads loads_;
+  FluxCorrectionList corrections_;
+  NodeOwnership ownership_;
+  std::vector<std::vector<FreeSide>> sides_used_;
+  std::vector<Real> current_values_;
+};
+
+}  // namespace argine

@@ -1,0 +1,318 @@
+#pragma once
+/// @file MohrCoulomb.hpp
+/// The return mapping of the elastic-perfectly plastic Mohr-Coulomb model with non-associated
+/// flow and an optional tension cut-off, in principal stress space (Clausen, Damkilde and
+/// Andersen 2006, 2007: "efficient return algorithms" for Mohr-Coulomb), plane strain with
+/// sigma_zz as the third principal stress. One job: the stress update of one point; the
+/// dispatch by model is in SolidModel.hpp.
+///
+/// Signs: tension positive. Principal stresses are sorted sigma_1 >= sigma_2 >= sigma_3, so
+/// sigma_3 is the major COMPRESSIVE stress. With k = (1 + sin phi)/(1 - sin phi) and
+/// m = (1 + sin psi)/(1 - sin psi) (N_phi and N_psi):
+///   yield     F1 = k sigma_1 - sigma_3 - sigma_c <= 0,  sigma_c = 2 c sqrt(k)
+///   potential G1 = m sigma_1 - sigma_3
+///   apex      sigma_1 = sigma_2 = sigma_3 = sigma_a = sigma_c / (k - 1) = c cot phi
+///   cut-off   T1 = sigma_1 - sigma_t <= 0 (associated), used only when sigma_t < sigma_a.
+/// In compression-positive terms F1 = 0 is the familiar |sigma_3| = N_phi |sigma_1| +
+/// 2 c sqrt(N_phi).
+///
+/// The surfaces are planes and the elastic stiffness in principal space is the constant
+/// D_ij = lambda + 2 G delta_ij, so every return is exact (no iteration): for an active set A
+/// of planes f_i = a_i . sigma - r_i with flow directions b_i,
+///   sigma = sigma_B - sum_{j in A} dlambda_j D b_j,   a_i . sigma = r_i (i in A),
+/// a linear system of size |A| <= 3. The active sets are tried in the order plane, edges
+/// (triaxial compression sigma_1 = sigma_2: {F1, F2}; triaxial extension sigma_2 = sigma_3:
+/// {F1, F3}), cut-off faces, corners; the first whose multipliers are >= 0 and whose stress
+/// is admissible and still sorted is the return (the Kuhn-Tucker conditions; Clausen's
+/// regions in principal space make it unique). When none is, the trial lies in the apex
+/// region and the stress returns to the apex (sigma_a, or sigma_t on all three axes with
+/// the cut-off). F2 = k sigma_2 - sigma_3 - sigma_c and F3 = k sigma_1 - sigma_2 - sigma_c
+/// are the neighbouring planes of the sextant (sigma_1, sigma_2 or sigma_2, sigma_3
+/// swapped).
+
+#include "argine/core/Types.hpp"
+#include "argine/materials/KernelMath.hpp"
+#include "argine/materials/LinearElastic.hpp"
+#include "argine/materials/MaterialParameters.hpp"
+
+namespace argine {
+
+/// Return regions of returnToMohrCoulomb (plastic_state values, see SolidModel.hpp).
+inline constexpr int kMohrCoulombElastic = 0;  ///< trial admissible
+inline constexpr int kMohrCoulombSurface = 1;  ///< plane, edge or cut-off face/edge/corner
+inline constexpr int kMohrCoulombApex = 2;     ///< all three principal stresses equal
+
+/// The strength of one point: c (Pa), phi and psi (rad), tension cut-off sigma_t (Pa).
+struct MohrCoulombStrength {
+  Real cohesion = 0;
+  Real friction_angle = 0;
+  Real dilatancy_angle = 0;
+  Real tensile_strength = 0;
+  bool tension_cutoff = false;
+};
+
+/// N = (1 + sin a)/(1 - sin a): k for the friction angle, m for the dilatancy angle.
+KOKKOS_INLINE_FUNCTION Real flowFactor(Real angle) {
+  const Real s = kmath::sin(angle);
+  return (1 + s) / (1 - s);
+}
+
+/// Apex stress sigma_a = 2 c sqrt(k) / (k - 1) = c cot phi (Pa, tension positive); +infinity
+/// for phi = 0 (Tresca: no apex).
+KOKKOS_INLINE_FUNCTION Real mohrCoulombApex(const MohrCoulombStrength& s) {
+  const Real k = flowFactor(s.friction_angle);
+  if (k <= 1) return kmath::infinity();
+  return 2 * s.cohesion * kmath::sqrt(k) / (k - 1);
+}
+
+/// F1 = k sigma_1 - sigma_3 - 2 c sqrt(k) (Pa) of SORTED principal stresses (> 0: outside).
+KOKKOS_INLINE_FUNCTION Real mohrCoulombYield(const MohrCoulombStrength& s, const Real sigma[3]) {
+  const Real k = flowFactor(s.friction_angle);
+  return k * sigma[0] - sigma[2] - 2 * s.cohesion * kmath::sqrt(k);
+}
+
+namespace mc_detail {
+
+/// One plane of the yield surface in principal space: f = a . sigma - r, flow direction b.
+struct Plane {
+  Real a[3];
+  Real b[3];
+  Real r;
+};
+
+/// The planes F1, F2, F3, T1, T2, T3 (file comment) in this order.
+enum PlaneId { kF1 = 0, kF2, kF3, kT1, kT2, kT3, kPlaneCount };
+
+KOKKOS_INLINE_FUNCTION void makePlanes(const MohrCoulombStrength& s, Plane planes[kPlaneCount]) {
+  const Real k = flowFactor(s.friction_angle);
+  const Real m = flowFactor(s.dilatancy_angle);
+  const Real sc = 2 * s.cohesion * kmath::sqrt(k);
+  const Plane f1 = {{k, 0, -1}, {m, 0, -1}, sc};
+  const Plane f2 = {{0, k, -1}, {0, m, -1}, sc};
+  const Plane f3 = {{k, -1, 0}, {m, -1, 0}, sc};
+  const Plane t1 = {{1, 0, 0}, {1, 0, 0}, s.tensile_strength};
+  const Plane t2 = {{0, 1, 0}, {0, 1, 0}, s.tensile_strength};
+  const Plane t3 = {{0, 0, 1}, {0, 0, 1}, s.tensile_strength};
+  planes[kF1] = f1;
+  planes[kF2] = f2;
+  planes[kF3] = f3;
+  planes[kT1] = t1;
+  planes[kT2] = t2;
+  planes[kT3] = t3;
+}
+
+/// D v in principal space: lambda (v1 + v2 + v3) + 2 G v_i.
+KOKKOS_INLINE_FUNCTION void applyStiffness(Real lambda, Real two_g, const Real v[3], Real out[3]) {
+  const Real trace = v[0] + v[1] + v[2];
+  for (int i = 0; i < 3; ++i) out[i] = lambda * trace + two_g * v[i];
+}
+
+/// Solves the n x n system A x = y (n <= 3) by Gaussian elimination with partial pivoting;
+/// false when singular (relative pivot below 1e-12).
+KOKKOS_INLINE_FUNCTION bool solveSmall(int n, Real A[3][3], Real y[3], Real x[3]) {
+  Real scale = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) scale = kmath::fmax(scale, kmath::fabs(A[i][j]));
+  if (!(scale > 0)) return false;
+  for (int c = 0; c < n; ++c) {
+    int pivot = c;
+    for (int i = c + 1; i < n; ++i)
+      if (kmath::fabs(A[i][c]) > kmath::fabs(A[pivot][c])) pivot = i;
+    if (kmath::fabs(A[pivot][c]) < 1e-12 * scale) return false;
+    if (pivot != c) {
+      for (int j = 0; j < n; ++j) {
+        const Real t = A[c][j];
+        A[c][j] = A[pivot][j];
+        A[pivot][j] = t;
+      }
+      const Real t = y[c];
+      y[c] = y[pivot];
+      y[pivot] = t;
+    }
+    for (int i = c + 1; i < n; ++i) {
+      const Real factor = A[i][c] / A[c][c];
+      for (int j = c; j < n; ++j) A[i][j] -= factor * A[c][j];
+      y[i] -= factor * y[c];
+    }
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    Real sum = y[i];
+    for (int j = i + 1; j < n; ++j) sum -= A[i][j] * x[j];
+    x[i] = sum / A[i][i];
+  }
+  return true;
+}
+
+/// Tries the return to the active set `ids` (n planes); on success (multipliers >= 0, F1
+/// and, with the cut-off, T1 satisfied, order kept) writes the returned stress to `out`.
+KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n, const int ids[3],
+                                         Real lambda, Real two_g, bool cutoff, Real tolerance,
+                                         const Real trial[3], Real out[3]) {
+  Real Db[3][3];  // D b_j of the active planes
+  for (int j = 0; j < n; ++j) applyStiffness(lambda, two_g, planes[ids[j]].b, Db[j]);
+  Real A[3][3], y[3], x[3];
+  for (int i = 0; i < n; ++i) {
+    const Plane& plane = planes[ids[i]];
+    y[i] = plane.a[0] * trial[0] + plane.a[1] * trial[1] + plane.a[2] * trial[2] - plane.r;
+    for (int j = 0; j < n; ++j)
+      A[i][j] = plane.a[0] * Db[j][0] + plane.a[1] * Db[j][1] + plane.a[2] * Db[j][2];
+  }
+  if (!solveSmall(n, A, y, x)) return false;
+  // Kuhn-Tucker: dlambda_j >= 0, measured as a stress (dlambda (lambda + 2G)).
+  for (int j = 0; j < n; ++j)
+    if (x[j] * (lambda + two_g) < -tolerance) return false;
+  for (int c = 0; c < 3; ++c) {
+    out[c] = trial[c];
+    for (int j = 0; j < n; ++j) out[c] -= x[j] * Db[j][c];
+  }
+  if (out[0] < out[1] - tolerance || out[1] < out[2] - tolerance) return false;
+  const Plane& f1 = planes[kF1];
+  if (f1.a[0] * out[0] + f1.a[2] * out[2] - f1.r > tolerance) return false;
+  if (cutoff && out[0] - planes[kT1].r > tolerance) return false;
+  return true;
+}
+
+}  // namespace mc_detail
+
+/// Returns the SORTED principal trial stresses sigma (sigma[0] >= sigma[1] >= sigma[2], Pa)
+/// to the Mohr-Coulomb surface in place (file comment); lambda, G the elastic constants.
+/// Writes the principal plastic strain increment D^-1 (sigma_trial - sigma) to
+/// plastic_strain and returns the region (kMohrCoulombElastic, Surface or Apex).
+KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength, Real lambda,
+                                               Real shear_modulus, Real sigma[3],
+                                               Real plastic_strain[3]) {
+  using namespace mc_detail;
+  for (int c = 0; c < 3; ++c) plastic_strain[c] = 0;
+  const Real apex = mohrCoulombApex(strength);
+  // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
+  const bool cutoff = strength.tension_cutoff && strength.tensile_strength < apex;
+  const Real scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
+                     strength.cohesion + (cutoff ? kmath::fabs(strength.tensile_strength) : 0);
+  const Real tolerance = 1e-12 * (scale > 0 ? scale : 1);
+  const bool outside = mohrCoulombYield(strength, sigma) > tolerance ||
+                       (cutoff && sigma[0] - strength.tensile_strength > tolerance);
+  if (!outside) return kMohrCoulombElastic;
+
+  Plane planes[kPlaneCount];
+  makePlanes(strength, planes);
+  const Real two_g = 2 * shear_modulus;
+  // Active sets in the order of the file comment; -1 ends a set.
+  constexpr int kSets = 12;
+  constexpr int sets[kSets][3] = {
+      {kF1, -1, -1},   {kF1, kF2, -1},  {kF1, kF3, -1},    // MC plane, edges
+      {kT1, -1, -1},   {kF1, kT1, -1},  {kT1, kT2, -1},    // cut-off face, edges
+      {kF1, kF3, kT1}, {kF1, kF2, kT1}, {kF1, kT1, kT2},   // corners sigma_1 = sigma_t
+      {kF2, kT1, kT2}, {kF1, kF2, kT2}, {kT1, kT2, kT3}};  // (Caratheodory subsets), tension apex
+  const int last = cutoff ? kSets : 3;
+  Real trial[3] = {sigma[0], sigma[1], sigma[2]};
+  Real out[3];
+  bool found = false;
+  int region = kMohrCoulombSurface;
+  for (int s = 0; s < last && !found; ++s) {
+    int n = 0;
+    while (n < 3 && sets[s][n] >= 0) ++n;
+    found = tryActiveSet(planes, n, sets[s], lambda, two_g, cutoff, tolerance, trial, out);
+    if (found && n == 3 && sets[s][0] == kT1 && sets[s][2] == kT3) region = kMohrCoulombApex;
+  }
+  if (!found) {  // apex region: MC apex, or with the cut-off all three at sigma_t
+    const Real corner = cutoff ? strength.tensile_strength : apex;
+    for (int c = 0; c < 3; ++c) out[c] = corner;
+    region = kMohrCoulombApex;
+  }
+  // d eps^p = D^-1 (sigma_B - sigma): D^-1 v = v / 2G - lambda tr(v) / (2G (3 lambda + 2G)).
+  Real dsigma[3];
+  for (int c = 0; c < 3; ++c) dsigma[c] = trial[c] - out[c];
+  const Real trace = dsigma[0] + dsigma[1] + dsigma[2];
+  for (int c = 0; c < 3; ++c) {
+    plastic_strain[c] = dsigma[c] / two_g - lambda * trace / (two_g * (3 * lambda + two_g));
+    sigma[c] = out[c];
+  }
+  return region;
+}
+
+/// In-plane principal decomposition of (xx, yy, xy): centre c, radius R >= 0 and the unit
+/// direction (cos 2 theta, sin 2 theta) of the major axis (1, 0 when R = 0). The principal
+/// values are c + R and c - R.
+struct InPlanePrincipal {
+  Real centre;
+  Real radius;
+  Real cos2;
+  Real sin2;
+};
+
+KOKKOS_INLINE_FUNCTION InPlanePrincipal inPlanePrincipal(Real xx, Real yy, Real xy) {
+  InPlanePrincipal p;
+  p.centre = (xx + yy) / 2;
+  const Real half = (xx - yy) / 2;
+  p.radius = kmath::sqrt(half * half + xy * xy);
+  const Real tiny = 1e-300;
+  if (p.radius > tiny) {
+    p.cos2 = half / p.radius;
+    p.sin2 = xy / p.radius;
+  } else {
+    p.cos2 = 1;
+    p.sin2 = 0;
+  }
+  return p;
+}
+
+/// Equivalent deviatoric strain sqrt(2/3 e:e) of principal strains.
+KOKKOS_INLINE_FUNCTION Real equivalentPrincipalDeviatoric(const Real e[3]) {
+  const Real mean = (e[0] + e[1] + e[2]) / 3;
+  const Real d0 = e[0] - mean, d1 = e[1] - mean, d2 = e[2] - mean;
+  return kmath::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2));
+}
+
+/// The Mohr-Coulomb update of one point in plane strain: elastic trial sigma + D d eps, its
+/// principal values (in-plane pair and sigma_zz), the return of returnToMohrCoulomb, and back
+/// to xx, yy, zz, xy with the trial's principal directions. `plastic_strain` grows by the
+/// equivalent deviatoric plastic strain sqrt(2/3 e^p:e^p) of the increment. Returns the
+/// region (plastic_state).
+KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(const SolidSpec& spec,
+                                                   const MohrCoulombStrength& strength,
+                                                   const Real dstrain[kStressComponents],
+                                                   Real stress[kStressComponents],
+                                                   Real& plastic_strain) {
+  Real dstress[kStressComponents];
+  elasticStressIncrement(spec, dstrain, dstress);
+  Real trial[kStressComponents];
+  for (int i = 0; i < kStressComponents; ++i) trial[i] = stress[i] + dstress[i];
+  const InPlanePrincipal in_plane = inPlanePrincipal(trial[0], trial[1], trial[3]);
+  const Real major = in_plane.centre + in_plane.radius;
+  const Real minor = in_plane.centre - in_plane.radius;
+  const Real zz = trial[2];
+  // Sort (major, minor, zz) descending; remember where zz went (0, 1 or 2).
+  Real sigma[3];
+  int z_slot;
+  if (zz >= major) {
+    sigma[0] = zz, sigma[1] = major, sigma[2] = minor, z_slot = 0;
+  } else if (zz >= minor) {
+    sigma[0] = major, sigma[1] = zz, sigma[2] = minor, z_slot = 1;
+  } else {
+    sigma[0] = major, sigma[1] = minor, sigma[2] = zz, z_slot = 2;
+  }
+  Real plastic[3];
+  const int region =
+      returnToMohrCoulomb(strength, lameLambda(spec), shearModulus(spec), sigma, plastic);
+  if (region == kMohrCoulombElastic) {
+    for (int i = 0; i < kStressComponents; ++i) stress[i] = trial[i];
+    return region;
+  }
+  Real new_major, new_minor, new_zz;
+  if (z_slot == 0) {
+    new_zz = sigma[0], new_major = sigma[1], new_minor = sigma[2];
+  } else if (z_slot == 1) {
+    new_major = sigma[0], new_zz = sigma[1], new_minor = sigma[2];
+  } else {
+    new_major = sigma[0], new_minor = sigma[1], new_zz = sigma[2];
+  }
+  const Real centre = (new_major + new_minor) / 2, radius = (new_major - new_minor) / 2;
+  stress[0] = centre + radius * in_plane.cos2;
+  stress[1] = centre - radius * in_plane.cos2;
+  stress[2] = new_zz;
+  stress[3] = radius * in_plane.sin2;
+  plastic_strain += equivalentPrincipalDeviatoric(plastic);
+  return region;
+}
+
+}  // namespace argine

@@ -1,0 +1,100 @@
+#pragma once
+/// @file HydraulicBoundaryStep.hpp
+/// The grid kernels of the hydraulic boundary conditions on the moving free boundary
+/// (thesis Sec. 4.1-4.3), called by ExplicitTwoPhaseSolver at these points of the Sec. 3.3
+/// step:
+///   after the P2G at t^k  mapBoundaryGradients     4.51 mass gradient, n_L = n S_L at the
+///                                                  nodes, the flux weights G_i (below)
+///                         addHydraulicLoads        head / pressure loads into f_L^ext (4.41)
+///                                                  and f^ext (4.42)
+///   after steps 1-2       correctHydraulicAccelerations   predictor-corrector 4.53-4.59
+///   after step 4 (remap)  correctHydraulicVelocities      the same correction re-imposed on
+///                                                  the remapped nodal velocities
+///   after step 4          boundaryFluxMasses       liquid mass through each condition
+///
+/// Flux accounting. The point mass balance (PointUpdates, LiquidState) changes a point's
+/// liquid mass by -dt V_p div(c w) (complete form, c = rho_L n S_L from the nodes, the
+/// advective term at the element centre) or -dt M_L,p div w (simplified), with w_i = v_L - v_S
+/// at the nodes. Both are linear in the nodal w_i, so the total change is exactly
+/// -dt sum_i w_i . G_i with
+///   complete:    G_i = sum_p V_p (c_centre grad N_i(x_p) + N_i(centre) grad c(x_p))
+///   simplified:  G_i = sum_p M_L,p grad N_i(x_p)
+/// (the content-weighted form of the unnormalised 4.51 vector). G_i vanishes at nodes whose
+/// support is filled with soil (exactly for Tri3 with full elements), so the sum is the flux
+/// through the boundary; the sum over the nodes a condition owns is its share.
+///
+/// Normals. mapBoundaryGradients computes the mass-gradient normal (4.51) at every node;
+/// the corrections use instead the normal of the correcting condition's OWN sides at the
+/// node (sum of n L / 2, normalised; FluxCorrectionList::normal). The two agree on a smooth
+/// surface, but at a corner where the condition covers one face only (the top corners of a
+/// column with sealed sides) 4.51 is diagonal, and correcting only the component of w along
+/// it leaves the tangential part, which crosses the face: a rain column measured 1000 x the
+/// rain through its top with 4.51. The node's flux is w . G_i, and for the condition's face
+/// G_i is parallel to its side normals, so correcting along them controls it exactly.
+
+#include <vector>
+
+#include "argine/boundary/HydraulicConditions.hpp"
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+class ActiveNodes;
+struct GridFields;
+struct MaterialPoints;
+struct PointShapes;
+struct PointMaterial;
+
+/// Nodal fields of the hydraulic conditions ("_i": one entry per mesh node).
+struct BoundaryGradientFields {
+  Kokkos::View<Real* [kDim], MemSpace> mass_gradient_i;  ///< sum_p m_m grad N_i (4.51), outward
+  Kokkos::View<Real* [kDim], MemSpace> flux_weight_i;    ///< G_i (kg/m^2 per m thickness)
+  Kokkos::View<Real*, MemSpace> wet_volume_i;            ///< sum_p N_i n S_L V (m^3)
+  void allocate(int num_nodes);
+  /// Zero on the listed nodes only.
+  void zero(const ActiveNodes& nodes);
+};
+
+/// The outward unit normal of a node from its mass gradient (4.51); zero when the gradient
+/// vanishes. Note the sign: sum_p m_p grad N_i(x_p) points OUT of the body at a boundary
+/// node (N_i grows towards its node, which lies on the surface), i.e. opposite to the
+/// gradient of the nodal mass field sum_i m_i grad N_i, which points inward.
+KOKKOS_INLINE_FUNCTION void outwardNormalOfMassGradient(const Real gradient[kDim],
+                                                        Real normal[kDim]) {
+  const Real length =
+      Kokkos::Experimental::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1]);
+  for (int d = 0; d < kDim; ++d) normal[d] = length > 0 ? gradient[d] / length : 0;
+}
+
+/// P2G at t^k of the mass gradient, wet volume and flux weights; `grid` must hold the nodal
+/// liquid content of t^k (computeNodalVelocities). Zero `fields` on the active nodes first.
+void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shapes,
+                          const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
+                          const Kokkos::View<const int*, MemSpace>& liquid_m,
+                          const GridFields& grid, BoundaryGradientFields& fields);
+
+/// Adds the loads to f^ext and f_L^ext of the nodes that carry solid mass.
+void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);
+
+/// Sec. 4.2 steps 2-5 at the correction nodes: predicted v~ = v^k + a dt, q_net (4.53), the
+/// switch (correctionApplies), and the corrected accelerations a += dv / dt (4.58, 4.59).
+/// Marks corrections.applied. `solid_moves` false in fixed-skeleton stages (4.56).
+void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
+                                   const BoundaryGradientFields& fields, Real dt, bool solid_moves,
+                                   GridFields& grid);
+
+/// Re-imposes the applied corrections on the remapped nodal velocities v^{k+1}, so the
+/// relative flux used by the mass balance is the prescribed one.
+void correctHydraulicVelocities(const FluxCorrectionList& corrections,
+                                const BoundaryGradientFields& fields, bool solid_moves,
+                                GridFields& grid);
+
+/// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
+/// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
+/// is the same sum over ALL active nodes (= the change of the points' liquid mass).
+std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
+                                     const ActiveNodes& active,
+                                     const BoundaryGradientFields& fields, const GridFields& grid,
+                                     Real dt);
+
+}  // namespace argine

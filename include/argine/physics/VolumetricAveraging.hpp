@@ -1,0 +1,72 @@
+#pragma once
+/// @file VolumetricAveraging.hpp
+/// Volumetric-locking and cell-crossing mitigation (thesis Ch. 4 Sec. 5; SPEC "strain
+/// smoothing (nodal mixed discretisation) or element-averaged ... (MPM-MIXED)"). Low-order
+/// elements crossed by several material points cannot follow a point-wise incompressible or
+/// plastically dilating volume change: the pressure and mean stress oscillate from point to
+/// point (locking, checkerboard). The remedy replaces the volumetric part of each point's
+/// increment by a smoothed one, per material (`Locking Mitigation` in the deck):
+///
+///   element  q_p <- sum_{q in e} w_q q_q / sum_{q in e} w_q  over the points of the point's
+///            element e that use the same averaging (MPM-MIXED style);
+///   nodal    q_i = sum_p N_i(x_p) w_p q_p / sum_p N_i(x_p) w_p at the nodes, then
+///            q_p <- sum_i N_i(x_p) q_i (nodal mixed discretisation).
+///
+/// Solid: q = d eps_vol = d eps_xx + d eps_yy (plane strain, d eps_zz = 0), w = V. The
+/// smoothed value is put back through d eps_xx and d eps_yy in equal parts (the in-plane
+/// deviatoric part and d eps_zz = 0 unchanged). At liquid-carrying points the relative
+/// divergence dt div(v_L - v_S) and the flux divergence dt div(c w) of the mass balance get the
+/// same averaging, so both phases see one smoothing operator (smoothing the solid alone gives
+/// a non-symmetric phase coupling that the explicit step amplifies). Both weightings keep
+/// sum V q, the change of the element (element) or of the body (nodal): volume and liquid
+/// mass are conserved.
+///
+/// Liquid: q = d p_L of the step at saturated points, w = n V (pore volume); then rho_L from
+/// (4.13) and M_L = n rho_L V. sum n V d p_L is kept, so the liquid mass is kept to first
+/// order in d p_L / K_L.
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+class ActiveNodes;
+class MaterialTable;
+struct MaterialPoints;
+struct PointRates;
+struct PointShapes;
+
+class VolumetricAveraging {
+ public:
+  VolumetricAveraging() = default;
+  /// Scratch for a mesh of `elements` elements and `nodes` nodes, allocated only when a
+  /// material of `table` asks for an averaging.
+  VolumetricAveraging(const MaterialTable& table, int elements, int nodes);
+
+  /// Whether any material averages the volumetric strain / the liquid pressure increment.
+  bool averagesStrain() const { return strain_; }
+  bool averagesPressure() const { return pressure_; }
+
+  /// Replaces d eps_vol of the points whose material asks for it (file comment). `active`
+  /// holds the nodes of the points' elements.
+  void averageStrainIncrements(const MaterialTable& table, const MaterialPoints& points,
+                               const PointShapes& shapes, const ActiveNodes& active,
+                               PointRates& rates);
+  /// Keeps p_L of every point before the liquid mass balance of the step.
+  void rememberPressures(const MaterialPoints& points);
+  /// After the mass balance: averages d p_L = p_L - remembered p_L of the saturated points
+  /// whose material asks for it; rho_L and M_L follow.
+  void averagePressureIncrements(const MaterialTable& table, const MaterialPoints& points,
+                                 const PointShapes& shapes, const ActiveNodes& active);
+
+ private:
+  bool strain_ = false;
+  bool pressure_ = false;
+  Kokkos::View<Real*, MemSpace> value_point_;       ///< per point: the quantity, then its average
+  Kokkos::View<Real*, MemSpace> weight_point_;      ///< per point: its weight (0: not averaged)
+  Kokkos::View<int*, MemSpace> mode_point_;         ///< per point: IncrementAveraging as int
+  Kokkos::View<Real*, MemSpace> old_pressure_;      ///< p_L before the step
+  Kokkos::View<Real* [2], MemSpace> element_sums_;  ///< sum w q, sum w per element
+  Kokkos::View<Real* [2], MemSpace> node_sums_;     ///< sum N w q, sum N w per node
+};
+
+}  // namespace argine

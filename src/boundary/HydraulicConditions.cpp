@@ -1,0 +1,216 @@
+#include "argine/boundary/HydraulicConditions.hpp"
+
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "argine/core/Error.hpp"
+#include "argine/mesh/Mesh.hpp"
+
+namespace argine {
+
+namespace {
+
+bool isHydraulic(BoundaryKind kind) {
+  return kind == BoundaryKind::TotalHead || kind == BoundaryKind::PressureSeries ||
+         kind == BoundaryKind::Infiltration || kind == BoundaryKind::SeepageFace;
+}
+
+/// Copies `values` into `view`, reallocating only when the length changed (plan() runs
+/// every step; the lists keep their length while the boundary does not change).
+template <class T>
+void toDevice(const std::vector<T>& values, const char* label, Kokkos::View<T*, MemSpace>& view) {
+  if (view.extent(0) != values.size() || !view.data())
+    view = Kokkos::View<T*, MemSpace>(std::string(label), values.size());
+  auto host = Kokkos::create_mirror_view(view);
+  for (std::size_t k = 0; k < values.size(); ++k) host(k) = values[k];
+  Kokkos::deep_copy(view, host);
+}
+
+}  // namespace
+
+TimeSeries makeTimeSeries(const TimeSeriesSpec& spec) {
+  switch (spec.source) {
+    case TimeSeriesSpec::Source::Constant:
+      return TimeSeries::constant(spec.value);
+    case TimeSeriesSpec::Source::Table:
+      return TimeSeries::fromPairs(spec.pairs, spec.where);
+    case TimeSeriesSpec::Source::File:
+      return TimeSeries::fromCsvFile(spec.file, spec.where);
+  }
+  return TimeSeries::constant(spec.value);
+}
+
+HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stage) {
+  for (const BoundarySpec& spec : stage.boundaries) {
+    if (!isHydraulic(spec.kind)) continue;
+    const std::string where = "Stages/" + stage.name + "/Boundary Conditions/" + spec.name;
+    HydraulicCondition condition;
+    condition.name = spec.name;
+    condition.kind = spec.kind;
+    condition.on_zone = spec.hydraulic.on_zone;
+    if (condition.on_zone) {
+      condition.zone = makeZone(spec.hydraulic.zone);
+    } else {
+      const SideSet* set = mesh.findSideSet(spec.side_set);
+      if (!set) {
+        std::string names;
+        for (const auto& name : mesh.sideSetNames()) names += (names.empty() ? "" : ", ") + name;
+        throw InputError(where, "side set '" + spec.side_set +
+                                    "' is not in the mesh; the mesh has side sets: " +
+                                    (names.empty() ? "(none)" : names));
+      }
+      for (std::size_t k = 0; k < set->elements.size(); ++k)
+        condition.side_set.push_back({set->elements[k], set->sides[k]});
+    }
+    if (spec.kind != BoundaryKind::SeepageFace)
+      condition.series = makeTimeSeries(spec.hydraulic.series);
+    condition.above = spec.hydraulic.above;
+    condition.pressure_above = spec.hydraulic.pressure_above;
+    condition.ponding = spec.hydraulic.ponding;
+    condition.liquid_density = spec.hydraulic.liquid_density;
+    conditions_.push_back(std::move(condition));
+  }
+  sides_used_.resize(conditions_.size());
+  current_values_.assign(conditions_.size(), 0.0);
+}
+
+std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& condition,
+                                                   const FreeBoundary& boundary) const {
+  std::vector<FreeSide> sides;
+  if (condition.on_zone) {
+    for (const FreeSide& side : boundary.sides())
+      if (zoneContains(condition.zone, side.midpoint(0), side.midpoint(1))) sides.push_back(side);
+  } else {
+    for (const auto& [element, local] : condition.side_set)
+      if (boundary.isActive(element)) sides.push_back(boundary.sideOf(element, local));
+  }
+  return sides;
+}
+
+void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
+  std::map<int, std::array<Real, kDim>> forces;  // node -> force (same on liquid and mixture)
+  struct Claim {
+    int kind = 0;
+    Real q_out = 0;
+    int condition = 0;
+  };
+  std::map<int, Claim> corrections;  // node -> the first condition correcting it
+  std::map<int, int> owner;          // node -> condition
+  std::map<std::pair<int, int>, std::array<Real, kDim>> face;  // (condition, node) -> sum n L/2
+  for (std::size_t c = 0; c < conditions_.size(); ++c) {
+    const HydraulicCondition& condition = conditions_[c];
+    const int index = static_cast<int>(c);
+    const std::vector<FreeSide> sides = sidesOf(condition, boundary);
+    sides_used_[c] = sides;
+    const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
+    current_values_[c] = value;
+    auto claim = [&](int node, FluxCorrection kind, Real q_out) {
+      corrections.emplace(node, Claim{static_cast<int>(kind), q_out, index});
+    };
+    for (const FreeSide& side : sides) {
+      for (const int node : {side.a, side.b}) {
+        owner.emplace(node, index);
+        auto& sum = face[{index, node}];
+        for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
+      }
+      Real fa[kDim] = {0, 0}, fb[kDim] = {0, 0};
+      switch (condition.kind) {
+        case BoundaryKind::TotalHead: {
+          HeadPressureRule rule;
+          rule.rho_g = condition.liquid_density * gravity;
+          rule.head = value;
+          rule.above = condition.above;
+          rule.pressure_above = condition.pressure_above;
+          headSideForces(side.xa, side.xb, side.length, side.normal, rule, fa, fb);
+          if (condition.above == AboveLevel::SeepageFace) {  // nodes above the level
+            if (side.xa[1] > value) claim(side.a, FluxCorrection::SeepageFace, 0.0);
+            if (side.xb[1] > value) claim(side.b, FluxCorrection::SeepageFace, 0.0);
+          }
+          break;
+        }
+        case BoundaryKind::PressureSeries:
+          pressureSideForces(value, value, side.length, side.normal, fa, fb);
+          break;
+        case BoundaryKind::Infiltration: {
+          const FluxCorrection kind = condition.ponding ? FluxCorrection::InfiltrationPonding
+                                                        : FluxCorrection::Infiltration;
+          for (const int node : {side.a, side.b}) claim(node, kind, -value);  // q_out = -q_in
+          break;
+        }
+        case BoundaryKind::SeepageFace:
+          for (const int node : {side.a, side.b}) claim(node, FluxCorrection::SeepageFace, 0.0);
+          break;
+        default:
+          break;
+      }
+      if (fa[0] != 0 || fa[1] != 0 || fb[0] != 0 || fb[1] != 0) {
+        for (int d = 0; d < kDim; ++d) {
+          forces[side.a][d] += fa[d];
+          forces[side.b][d] += fb[d];
+        }
+      }
+    }
+  }
+
+  // loads: the same force on the liquid and the mixture
+  std::vector<int> load_node;
+  std::vector<Real> load_force;
+  for (const auto& [node, f] : forces) {
+    load_node.push_back(node);
+    load_force.push_back(f[0]);
+    load_force.push_back(f[1]);
+  }
+  const std::size_t n = load_node.size();
+  if (loads_.count() != static_cast<int>(n)) {
+    loads_.node = Kokkos::View<int*, MemSpace>("hydraulic_load_node", n);
+    loads_.mixture = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_mixture", n);
+    loads_.liquid = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_liquid", n);
+  }
+  {
+    auto node = Kokkos::create_mirror_view(loads_.node);
+    auto mixture = Kokkos::create_mirror_view(loads_.mixture);
+    for (std::size_t j = 0; j < n; ++j) {
+      node(j) = load_node[j];
+      for (int d = 0; d < kDim; ++d) mixture(j, d) = load_force[2 * j + d];
+    }
+    Kokkos::deep_copy(loads_.node, node);
+    Kokkos::deep_copy(loads_.mixture, mixture);
+    Kokkos::deep_copy(loads_.liquid, mixture);
+  }
+
+  std::vector<int> c_node, c_kind;
+  std::vector<Real> c_q, c_normal;
+  for (const auto& [node, entry] : corrections) {
+    c_node.push_back(node);
+    c_kind.push_back(entry.kind);
+    c_q.push_back(entry.q_out);
+    const auto& sum = face[{entry.condition, node}];
+    const Real length = std::hypot(sum[0], sum[1]);
+    for (int d = 0; d < kDim; ++d) c_normal.push_back(length > 0 ? sum[d] / length : 0);
+  }
+  const bool resized = corrections_.count() != static_cast<int>(c_node.size());
+  toDevice(c_node, "correction_node", corrections_.node);
+  toDevice(c_kind, "correction_kind", corrections_.kind);
+  toDevice(c_q, "correction_q_out", corrections_.q_out);
+  if (resized || !corrections_.applied.data()) {
+    corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
+    corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());
+  }
+  {
+    auto normal = Kokkos::create_mirror_view(corrections_.normal);
+    for (std::size_t j = 0; j < c_node.size(); ++j)
+      for (int d = 0; d < kDim; ++d) normal(j, d) = c_normal[kDim * j + d];
+    Kokkos::deep_copy(corrections_.normal, normal);
+  }
+
+  std::vector<int> o_node, o_owner;
+  for (const auto& [node, c] : owner) {
+    o_node.push_back(node);
+    o_owner.push_back(c);
+  }
+  toDevice(o_node, "owned_node", ownership_.node);
+  toDevice(o_owner, "owner", ownership_.owner);
+}
+
+}  // namespace argine

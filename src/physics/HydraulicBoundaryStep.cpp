@@ -1,0 +1,227 @@
+#include "argine/physics/HydraulicBoundaryStep.hpp"
+
+#include <Kokkos_ScatterView.hpp>
+
+#include "argine/physics/MaterialTable.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/PointShapes.hpp"
+
+namespace argine {
+
+namespace {
+
+namespace KE = Kokkos::Experimental;
+
+template <int kNodes>
+void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
+                              const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
+                              const Kokkos::View<const int*, MemSpace>& liquid_m,
+                              const GridFields& grid, BoundaryGradientFields& fields) {
+  const auto shape_p = shapes.shape_p;
+  const auto material_p = points.material;
+  const auto volume_p = points.volume;
+  const auto mass_solid_p = points.mass_solid;
+  const auto mass_liquid_p = points.mass_liquid;
+  const auto porosity_p = points.porosity;
+  const auto saturation_p = points.saturation;
+  const auto content_i = grid.liquid_content_i;
+  auto gradient_sv = KE::create_scatter_view(fields.mass_gradient_i);
+  auto weight_sv = KE::create_scatter_view(fields.flux_weight_i);
+  auto wet_sv = KE::create_scatter_view(fields.wet_volume_i);
+  Kokkos::parallel_for(
+      "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        const PointShape& shape = shape_p(p);
+        if (shape.node[0] < 0) return;
+        const bool wet = liquid_m(material_p(p)) != 0;
+        const Real m_mixture = mass_solid_p(p) + (wet ? mass_liquid_p(p) : 0);  // 4.51
+        auto gradient_i = gradient_sv.access();
+        for (int a = 0; a < kNodes; ++a)
+          for (int d = 0; d < kDim; ++d)
+            gradient_i(shape.node[a], d) += m_mixture * shape.gradient[a][d];
+        if (!wet) return;
+        auto weight_i = weight_sv.access();
+        auto wet_i = wet_sv.access();
+        const Real volume = volume_p(p);
+        const Real wet_volume = porosity_p(p) * saturation_p(p) * volume;
+        for (int a = 0; a < kNodes; ++a) wet_i(shape.node[a]) += shape.value[a] * wet_volume;
+        if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
+          // the same centre value and point gradient of c as interpolateVelocityGradients
+          constexpr Real centre = Real(1) / kNodes;
+          Real c_centre = 0, grad_c[kDim] = {0, 0};
+          for (int a = 0; a < kNodes; ++a) {
+            const Real c = content_i(shape.node[a]);
+            c_centre += centre * c;
+            grad_c[0] += c * shape.gradient[a][0];
+            grad_c[1] += c * shape.gradient[a][1];
+          }
+          for (int a = 0; a < kNodes; ++a)
+            for (int d = 0; d < kDim; ++d)
+              weight_i(shape.node[a], d) +=
+                  volume * (c_centre * shape.gradient[a][d] + centre * grad_c[d]);
+        } else {
+          const Real m_liquid = mass_liquid_p(p);
+          for (int a = 0; a < kNodes; ++a)
+            for (int d = 0; d < kDim; ++d)
+              weight_i(shape.node[a], d) += m_liquid * shape.gradient[a][d];
+        }
+      });
+  KE::contribute(fields.mass_gradient_i, gradient_sv);
+  KE::contribute(fields.flux_weight_i, weight_sv);
+  KE::contribute(fields.wet_volume_i, wet_sv);
+}
+
+/// n_L = n S_L at node i, mapped from the points: sum N n S_L V / sum N V.
+KOKKOS_INLINE_FUNCTION Real nodalLiquidFraction(Real wet_volume, Real volume) {
+  return volume > 0 ? wet_volume / volume : 0;
+}
+
+}  // namespace
+
+void BoundaryGradientFields::allocate(int num_nodes) {
+  mass_gradient_i = Kokkos::View<Real* [kDim], MemSpace>("mass_gradient_i", num_nodes);
+  flux_weight_i = Kokkos::View<Real* [kDim], MemSpace>("flux_weight_i", num_nodes);
+  wet_volume_i = Kokkos::View<Real*, MemSpace>("wet_volume_i", num_nodes);
+}
+
+void BoundaryGradientFields::zero(const ActiveNodes& active) {
+  const auto nodes = active.nodes();
+  const auto g = mass_gradient_i, w = flux_weight_i;
+  const auto v = wet_volume_i;
+  Kokkos::parallel_for(
+      "zero_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int d = 0; d < kDim; ++d) g(i, d) = w(i, d) = 0;
+        v(i) = 0;
+      });
+}
+
+void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shapes,
+                          const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
+                          const Kokkos::View<const int*, MemSpace>& liquid_m,
+                          const GridFields& grid, BoundaryGradientFields& fields) {
+  if (shapes.type == ElementType::Tri3)
+    mapBoundaryGradientsImpl<3>(points, shapes, materials_m, liquid_m, grid, fields);
+  else
+    mapBoundaryGradientsImpl<4>(points, shapes, materials_m, liquid_m, grid, fields);
+}
+
+void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {
+  const auto node = loads.node;
+  const auto mixture = loads.mixture;
+  const auto liquid = loads.liquid;
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "add_hydraulic_loads", Kokkos::RangePolicy<ExecSpace>(0, loads.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = node(j);  // each node once per list: plain adds are race-free
+        if (!(g.mass_solid_i(i) > 0)) return;
+        for (int d = 0; d < kDim; ++d) {
+          g.force_mixture_i(i, d) += mixture(j, d);
+          if (g.mass_liquid_intrinsic_i(i) > 0) g.force_liquid_i(i, d) += liquid(j, d);
+        }
+      });
+}
+
+void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
+                                   const BoundaryGradientFields& fields, Real dt, bool solid_moves,
+                                   GridFields& grid) {
+  const auto node = corrections.node;
+  const auto kind = corrections.kind;
+  const auto q_out = corrections.q_out;
+  const auto applied = corrections.applied;
+  const auto normal_j = corrections.normal;
+  const auto wet_i = fields.wet_volume_i;
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "correct_hydraulic_accelerations", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = node(j);
+        applied(j) = 0;
+        const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
+        const Real normal[kDim] = {normal_j(j, 0), normal_j(j, 1)};
+        if (!(n_liquid > 0) || (normal[0] == 0 && normal[1] == 0)) return;
+        Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
+        for (int d = 0; d < kDim; ++d) {  // Sec. 4.2 step 2: the prediction
+          vl[d] = g.velocity_liquid_i(i, d) + dt * g.acceleration_liquid_i(i, d);
+          vs[d] = g.velocity_solid_i(i, d) + dt * g.acceleration_solid_i(i, d);
+        }
+        const Real q_net = relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i),
+                                                  solid_moves, normal, vl, vs, q_out(j), dvl, dvs);
+        if (!correctionApplies(kind(j), q_net)) return;  // step 3: the switch
+        applied(j) = 1;
+        for (int d = 0; d < kDim; ++d) {  // step 5: corrected accelerations
+          g.acceleration_liquid_i(i, d) += dvl[d] / dt;
+          g.acceleration_solid_i(i, d) += dvs[d] / dt;
+        }
+      });
+}
+
+void correctHydraulicVelocities(const FluxCorrectionList& corrections,
+                                const BoundaryGradientFields& fields, bool solid_moves,
+                                GridFields& grid) {
+  const auto node = corrections.node;
+  const auto q_out = corrections.q_out;
+  const auto applied = corrections.applied;
+  const auto normal_j = corrections.normal;
+  const auto wet_i = fields.wet_volume_i;
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "correct_hydraulic_velocities", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
+      KOKKOS_LAMBDA(const int j) {
+        if (!applied(j)) return;
+        const int i = node(j);
+        const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
+        const Real normal[kDim] = {normal_j(j, 0), normal_j(j, 1)};
+        Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
+        for (int d = 0; d < kDim; ++d) {
+          vl[d] = g.velocity_liquid_i(i, d);
+          vs[d] = g.velocity_solid_i(i, d);
+        }
+        relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i), solid_moves, normal,
+                               vl, vs, q_out(j), dvl, dvs);
+        for (int d = 0; d < kDim; ++d) {
+          g.velocity_liquid_i(i, d) += dvl[d];
+          g.velocity_solid_i(i, d) += dvs[d];
+        }
+      });
+}
+
+std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
+                                     const ActiveNodes& active,
+                                     const BoundaryGradientFields& fields, const GridFields& grid,
+                                     Real dt) {
+  std::vector<Real> masses(conditions + 1, 0.0);
+  const auto weight_i = fields.flux_weight_i;
+  const auto vl_i = grid.velocity_liquid_i;
+  const auto vs_i = grid.velocity_solid_i;
+  auto inflow = KOKKOS_LAMBDA(const int i) {  // -dt w_i . G_i
+    Real sum = 0;
+    for (int d = 0; d < kDim; ++d) sum -= dt * (vl_i(i, d) - vs_i(i, d)) * weight_i(i, d);
+    return sum;
+  };
+  const auto owned = ownership.node;
+  const auto owner = ownership.owner;
+  for (int c = 0; c < conditions; ++c) {
+    Real sum = 0;
+    Kokkos::parallel_reduce(
+        "boundary_flux_of_condition", Kokkos::RangePolicy<ExecSpace>(0, ownership.count()),
+        KOKKOS_LAMBDA(const int j, Real& s) {
+          if (owner(j) == c) s += inflow(owned(j));
+        },
+        sum);
+    masses[c] = sum;
+  }
+  const auto nodes = active.nodes();
+  Real total = 0;
+  Kokkos::parallel_reduce(
+      "boundary_flux_total", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j, Real& s) { s += inflow(nodes(j)); }, total);
+  masses[conditions] = total;
+  return masses;
+}
+
+}  // namespace argine
