@@ -3,9 +3,9 @@
 //
 // Runs levee_seepage_implicit.yaml (backward Euler, adaptive step, Tri3 0.05 m, 3 points per
 // element) from the hydrostatic profile p_L = rho_L g (0.2 - y), at several settings, and a
-// reference (Tri3 0.025 m, steps <= 0.5 s, |dS_L| <= 0.02 per step). Profiles on the sections S1 (x = 1.5 m) and S2
-// (x = 3.0 m) at 72, 160 and 300 s are sampled at y = 0.0125 + 0.025 k (k = 0..29, up to
-// the slope at y = 0.75 m):
+// reference (Tri3 0.025 m, steps <= 0.5 s, |dS_L| <= 0.02 per step). Profiles on the sections S1 (x
+// = 1.5 m) and S2 (x = 3.0 m) at 72, 160 and 300 s are sampled at y = 0.0125 + 0.025 k (k = 0..29,
+// up to the slope at y = 0.75 m):
 //   - implicit runs: the finite-element field (nodal p_L, Tri3 interpolation) at (x_s, y);
 //   - explicit runs (`--explicit FILE`, repeatable as --explicit2 FILE: <tag>_sections.csv of
 //     levee_seepage_verification, the points within 0.03 m of the section): a least-squares
