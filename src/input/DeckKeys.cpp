@@ -409,6 +409,74 @@ ListSchema boundaryKeys() {
   return boundary;
 }
 
+// ---------------------------------------------------------------- implicit seepage (P5)
+
+ListSchema linearSolverKeys() {
+  ListSchema linear;
+  linear.add(KeySpec::choice("Solver", Words{"gmres", "cg"},
+                             "Belos Krylov solver (cg needs a symmetric system: no "
+                             "non-symmetric terms are assembled, so both work)")
+                 .byDefault(std::string("gmres")));
+  linear.add(KeySpec::real("Tolerance", "-", "relative residual of each linear solve")
+                 .above(0)
+                 .below(1)
+                 .byDefault(1e-12));
+  linear.add(KeySpec::integer("Maximum Iterations", "Krylov iterations per solve")
+                 .atLeast(1)
+                 .byDefault(1000LL));
+  linear.add(KeySpec::choice("Preconditioner",
+                             Words{"riluk", "ilut", "relaxation", "chebyshev", "none"},
+                             "Ifpack2 preconditioner (relaxation: symmetric Gauss-Seidel)")
+                 .byDefault(std::string("riluk")));
+  linear.add(KeySpec::integer("Fill Level", "riluk/ilut level of fill").atLeast(0).byDefault(1LL));
+  linear.add(
+      KeySpec::integer("Sweeps", "relaxation sweeps / chebyshev degree").atLeast(1).byDefault(2LL));
+  return linear;
+}
+
+ListSchema implicitSeepageKeys() {
+  ListSchema seepage;
+  seepage.add(KeySpec::real("Theta", "-",
+                            "theta of the time scheme: 1 backward Euler, 0.5 "
+                            "Crank-Nicolson")
+                  .atLeast(0.5)
+                  .atMost(1)
+                  .byDefault(1.0));
+  seepage.add(KeySpec::real("Initial Step (s)", "s", "first time step").above(0).byDefault(1.0));
+  seepage.add(KeySpec::real("Minimum Step (s)", "s", "a step that fails below this stops the run")
+                  .above(0)
+                  .byDefault(1e-6));
+  seepage.add(
+      KeySpec::real("Maximum Step (s)", "s", "largest time step (default: unlimited)").above(0));
+  seepage.add(KeySpec::boolean("Adaptive Step",
+                               "adapt the step to the Picard iterations and the saturation change")
+                  .byDefault(true));
+  seepage.add(KeySpec::real("Maximum Saturation Change", "-",
+                            "target largest |dS_L| of a point per step (adaptive step)")
+                  .above(0)
+                  .atMost(1)
+                  .byDefault(0.05));
+  seepage.add(KeySpec::integer("Picard Iterations", "most modified-Picard iterations per step")
+                  .atLeast(1)
+                  .byDefault(30LL));
+  seepage.add(KeySpec::real("Pressure Tolerance (Pa)", "Pa",
+                            "converged when the last Picard update changed no p_L by more")
+                  .above(0)
+                  .byDefault(1e-6));
+  seepage.add(KeySpec::real("Mass Tolerance", "-",
+                            "converged when the free-node mass residual is below this fraction "
+                            "of the storage + flux terms")
+                  .above(0)
+                  .byDefault(1e-12));
+  seepage.add(KeySpec::real("Minimum Suction Fraction", "-",
+                            "van Genuchten lambda < 0.5: the Picard matrix takes dS_L/ds at no "
+                            "less than this fraction of p_ref (the residual is not changed)")
+                  .atLeast(0)
+                  .byDefault(1e-2));
+  seepage.add(KeySpec::sublist("Linear Solver", linearSolverKeys(), "Belos + Ifpack2 settings"));
+  return seepage;
+}
+
 // ---- issue P4: stage relaxation and material changes ----
 
 ListSchema relaxationKeys() {
@@ -482,6 +550,9 @@ ListSchema stageKeys() {
   stage.add(KeySpec::sublist("Time Step", timeStepKeys(), "time-step control"));
   stage.add(KeySpec::namedSublists("Boundary Conditions", "condition", boundaryKeys(),
                                    "boundary conditions of this stage"));
+  stage.add(KeySpec::sublist("Implicit Seepage", implicitSeepageKeys(),
+                             "settings of an implicit seepage stage")
+                .when("Solver", {"implicit seepage"}));
   // issue P4
   stage.add(KeySpec::sublist("Relaxation", relaxationKeys(),
                              "end the stage early once quasi-static (Duration (s) is then the "

@@ -264,6 +264,40 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
   return spec;
 }
 
+// ---------------------------------------------------------------- implicit seepage (P5)
+
+LinearSolverSpec parseLinearSolver(const DeckSection& linear) {
+  LinearSolverSpec spec;
+  spec.solver = linear.word("Solver") == "cg" ? "CG" : "GMRES";
+  spec.tolerance = linear.real("Tolerance");
+  spec.max_iterations = static_cast<int>(linear.integer("Maximum Iterations"));
+  const std::string preconditioner = linear.word("Preconditioner");
+  spec.preconditioner = preconditioner == "riluk"        ? "RILUK"
+                        : preconditioner == "ilut"       ? "ILUT"
+                        : preconditioner == "relaxation" ? "RELAXATION"
+                        : preconditioner == "chebyshev"  ? "CHEBYSHEV"
+                                                         : "NONE";
+  spec.fill_level = static_cast<int>(linear.integer("Fill Level"));
+  spec.sweeps = static_cast<int>(linear.integer("Sweeps"));
+  return spec;
+}
+
+ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
+  ImplicitSeepageSpec spec;
+  spec.theta = seepage.real("Theta");
+  spec.initial_step = seepage.real("Initial Step (s)");
+  spec.min_step = seepage.real("Minimum Step (s)");
+  if (seepage.has("Maximum Step (s)")) spec.max_step = seepage.real("Maximum Step (s)");
+  spec.adaptive = seepage.boolean("Adaptive Step");
+  spec.max_saturation_change = seepage.real("Maximum Saturation Change");
+  spec.max_picard_iterations = static_cast<int>(seepage.integer("Picard Iterations"));
+  spec.pressure_tolerance = seepage.real("Pressure Tolerance (Pa)");
+  spec.mass_tolerance = seepage.real("Mass Tolerance");
+  spec.min_suction_fraction = seepage.real("Minimum Suction Fraction");
+  spec.linear = parseLinearSolver(seepage.section("Linear Solver"));
+  return spec;
+}
+
 // ---- Locking mitigation (volumetric averaging)
 LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
   LockingMitigationSpec spec;
@@ -334,6 +368,8 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.time_step = parseTimeStep(stage.section("Time Step"));
   for (const auto& boundary : stage.entries("Boundary Conditions"))
     spec.boundaries.push_back(parseBoundary(boundary));
+  if (spec.solver == SolverKind::ImplicitSeepage)
+    spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
   parseStageAdditions(stage, spec);  // issue P4
   return spec;
 }

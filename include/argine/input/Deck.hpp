@@ -71,6 +71,35 @@ struct MaterialSpec {
   LockingMitigationSpec locking;  ///< anti-locking averaging (`Locking Mitigation`)
 };
 
+// ---------------------------------------------------------------- implicit seepage (P5)
+// Settings of an `implicit seepage` stage (seepage room, ImplicitSeepageSolver).
+
+/// The Belos solver and Ifpack2 preconditioner of the implicit seepage path's linear systems.
+struct LinearSolverSpec {
+  std::string solver = "GMRES";          ///< Belos name: "GMRES" or "CG" (CG: symmetric)
+  Real tolerance = 1e-12;                ///< relative residual of each linear solve
+  int max_iterations = 1000;             ///< Krylov iterations per solve
+  std::string preconditioner = "RILUK";  ///< Ifpack2: RILUK, ILUT, RELAXATION, CHEBYSHEV, NONE
+  int fill_level = 1;                    ///< RILUK level of fill / ILUT level-of-fill
+  std::string relaxation = "Symmetric Gauss-Seidel";  ///< RELAXATION type
+  int sweeps = 2;                                     ///< RELAXATION sweeps / CHEBYSHEV degree
+};
+
+struct ImplicitSeepageSpec {
+  Real theta = 1;                      ///< 1: backward Euler, 1/2: Crank-Nicolson
+  Real initial_step = 1;               ///< first time step (s)
+  Real min_step = 1e-6;                ///< below this a failed step stops the run (s)
+  Real max_step = 1e30;                ///< (s)
+  bool adaptive = true;                ///< false: every step is initial_step
+  Real max_saturation_change = 0.05;   ///< target max |dS_L| per step at any point
+  int max_picard_iterations = 30;      ///< per step (and per active-set pass)
+  int max_active_set_iterations = 30;  ///< seepage face / ponding switches per step
+  Real pressure_tolerance = 1e-6;      ///< max |dp_L| of the last Picard update (Pa)
+  Real mass_tolerance = 1e-12;         ///< |free-node residual| / (storage + flux scale)
+  Real min_suction_fraction = 1e-2;    ///< van Genuchten lambda < 0.5: s_reg = this x p_ref
+  LinearSolverSpec linear;
+};
+
 // ---------------------------------------------------------------- stages
 
 enum class SolverKind { Explicit, FixedSkeleton, QuasiStatic, ImplicitSeepage };
@@ -197,6 +226,7 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
+  ImplicitSeepageSpec seepage;                       ///< used by `implicit seepage` stages only
   RelaxationSpec relaxation;                         ///< optional early end (issue P4)
   std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
 };

@@ -62,6 +62,7 @@ class Simulation {
 
  private:
   void runStage(const StageSpec& stage);
+  void runImplicitSeepageStage(const StageSpec& stage);  ///< implicit seepage (P5)
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   void writeOutput();
   void writeDiagnostics();

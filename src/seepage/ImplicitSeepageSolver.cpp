@@ -1,0 +1,517 @@
+#include "argine/seepage/ImplicitSeepageSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "SeepageLinearSystem.hpp"
+#include "argine/core/Error.hpp"
+#include "argine/mesh/Mesh.hpp"
+#include "argine/physics/MaterialTable.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/seepage/SeepagePointTerms.hpp"
+#include "argine/transfer/PointShapes.hpp"
+
+namespace argine {
+
+namespace {
+constexpr int kNone = -1;
+}  // namespace
+
+struct ImplicitSeepageSolver::Impl {
+  const Mesh& mesh;
+  MaterialPoints& points;
+  MaterialTable table;
+  int nodes_per_element = 0;
+
+  // Liquid-carrying located points, host copies (the skeleton is fixed: they never change).
+  struct Point {
+    int index;      // into `points`
+    int material;   // material id
+    Real porosity;  // n
+    Real volume;    // V (m^2 per metre)
+    int dof[kMaxElementNodes];
+    PointShape shape;
+  };
+  std::vector<Point> liquid_points;
+  std::vector<int> dof_of_node, node_of_dof;
+  std::unique_ptr<SeepageLinearSystem> system;
+
+  ImplicitSeepageSpec settings;
+  Real gravity = kStandardGravity;
+  Real reference_density = 1000;  // rho_L0 of the supplied water
+  Real time = 0, next_step = 1;
+  SeepageTotals totals;
+
+  // Per unknown: prescribed pressure, supply (kg/s per m), switchable, held at p = 0.
+  std::vector<char> fixed, switchable, held;
+  std::vector<Real> fixed_value, supply;
+
+  std::vector<Real> p;  // nodal p_L, every unknown on every rank
+
+  // Time-dependent conditions (a stage's plan): re-evaluated for every step (at()).
+  std::unique_ptr<SeepageBoundaryPlan> plan;
+
+  void applyConditions(const SeepageBoundaryConditions& conditions, bool keep_held);
+
+  Impl(const Mesh& m, MaterialPoints& pts, const std::vector<MaterialSpec>& materials)
+      : mesh(m), points(pts), table(materials), nodes_per_element(m.nodesPerElement()) {}
+
+  int dofs() const { return static_cast<int>(node_of_dof.size()); }
+  const PointMaterial& material(const Point& point) const { return table.host(point.material); }
+
+  Real interpolate(const Point& point, const std::vector<Real>& nodal) const {
+    Real local[kMaxElementNodes];
+    for (int a = 0; a < nodes_per_element; ++a) local[a] = nodal[point.dof[a]];
+    return interpolateAtPoint(point.shape, nodes_per_element, local);
+  }
+
+  bool touchesOwnedRow(const Point& point) const {
+    for (int a = 0; a < nodes_per_element; ++a)
+      if (system->owns(point.dof[a])) return true;
+    return false;
+  }
+
+  /// Flux terms F_a(p) of the owned rows, summed over ranks (every unknown).
+  std::vector<Real> flux(const std::vector<Real>& nodal) const {
+    std::vector<Real> out(dofs(), 0.0);
+    for (const Point& point : liquid_points) {
+      if (!touchesOwnedRow(point)) continue;
+      const PointMaterial& mat = material(point);
+      const Real pressure = interpolate(point, nodal);
+      Real local[kMaxElementNodes], f[kMaxElementNodes] = {0, 0, 0, 0};
+      for (int a = 0; a < nodes_per_element; ++a) local[a] = nodal[point.dof[a]];
+      addPointFluxVector(point.shape, nodes_per_element, local,
+                         point.volume * darcyMobility(mat, pressure),
+                         liquidDensity(mat.liquid, pressure) * gravity, f);
+      for (int a = 0; a < nodes_per_element; ++a)
+        if (system->owns(point.dof[a])) out[point.dof[a]] += f[a];
+    }
+    system->sumOverRanks(out);
+    return out;
+  }
+
+  /// Storage terms sum_p N_a n V [S rho]_{p_old}^{p} (kg/m), owned rows, summed over ranks.
+  std::vector<Real> storage(const std::vector<Real>& nodal, const std::vector<Real>& old) const {
+    std::vector<Real> out(dofs(), 0.0);
+    for (const Point& point : liquid_points) {
+      if (!touchesOwnedRow(point)) continue;
+      const Real change =
+          point.porosity * point.volume *
+          liquidContentChange(material(point), interpolate(point, nodal), interpolate(point, old));
+      for (int a = 0; a < nodes_per_element; ++a)
+        if (system->owns(point.dof[a])) out[point.dof[a]] += point.shape.value[a] * change;
+    }
+    system->sumOverRanks(out);
+    return out;
+  }
+
+  void assembleMatrix(const std::vector<Real>& nodal, Real dt) {
+    system->beginAssembly();
+    const Real theta = settings.theta;
+    for (const Point& point : liquid_points) {
+      if (!touchesOwnedRow(point)) continue;
+      const PointMaterial& mat = material(point);
+      const Real pressure = interpolate(point, nodal);
+      Real local[kMaxElementNodes][kMaxElementNodes] = {};
+      addPointStorageMatrix(point.shape, nodes_per_element,
+                            point.porosity * point.volume *
+                                storageSlope(mat, pressure, settings.min_suction_fraction) / dt,
+                            local);
+      addPointConductivityMatrix(point.shape, nodes_per_element,
+                                 theta * point.volume * darcyMobility(mat, pressure), local);
+      for (int a = 0; a < nodes_per_element; ++a) {
+        const int row = point.dof[a];
+        if (!system->owns(row) || isFixed(row)) continue;
+        int cols[kMaxElementNodes];
+        Real vals[kMaxElementNodes];
+        int count = 0;
+        for (int b = 0; b < nodes_per_element; ++b) {
+          if (isFixed(point.dof[b])) continue;  // eliminated: keeps the matrix symmetric
+          cols[count] = point.dof[b];
+          vals[count++] = local[a][b];
+        }
+        system->add(row, cols, vals, count);
+      }
+    }
+    const Real one = 1;
+    for (int row = system->firstOwned(); row < system->endOwned(); ++row)
+      if (isFixed(row)) system->add(row, &row, &one, 1);
+    system->endAssembly();
+  }
+
+  bool isFixed(int dof) const { return fixed[dof] || held[dof]; }
+  Real fixedValue(int dof) const { return fixed[dof] ? fixed_value[dof] : 0.0; }
+
+  Real pointsLiquidMass(const std::vector<Real>& nodal) const {
+    Real mass = 0;
+    for (const Point& point : liquid_points)
+      mass +=
+          point.porosity * point.volume * liquidContent(material(point), interpolate(point, nodal));
+    return mass;
+  }
+
+  SeepageStepResult step(Real dt);
+};
+
+// ------------------------------------------------------------------ construction
+
+ImplicitSeepageSolver::ImplicitSeepageSolver(const Mesh& mesh, MaterialPoints& points,
+                                             const std::vector<MaterialSpec>& materials,
+                                             Teuchos::RCP<const Teuchos::Comm<int>> comm)
+    : impl_(std::make_unique<Impl>(mesh, points, materials)) {
+  Impl& s = *impl_;
+  PointShapes shapes;
+  evaluatePointShapes(mesh, points, shapes);
+  const auto shape_h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.shape_p);
+  const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
+  const auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.material);
+  const auto porosity = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.porosity);
+  const auto volume = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.volume);
+  const auto connectivity =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
+
+  // Active nodes: nodes of elements holding liquid-carrying points, numbered in mesh order.
+  s.dof_of_node.assign(mesh.numNodes(), kNone);
+  std::vector<char> element_wet(mesh.numElements(), 0);
+  for (int p = 0; p < points.count; ++p) {
+    if (element(p) < 0 || !carriesLiquid(s.table.host(material(p)).phase)) continue;
+    element_wet[element(p)] = 1;
+    for (int a = 0; a < s.nodes_per_element; ++a) s.dof_of_node[connectivity(element(p), a)] = 0;
+  }
+  for (int node = 0; node < mesh.numNodes(); ++node)
+    if (s.dof_of_node[node] == 0) {
+      s.dof_of_node[node] = static_cast<int>(s.node_of_dof.size());
+      s.node_of_dof.push_back(node);
+    }
+  if (s.node_of_dof.empty())
+    throw InputError("Materials", "implicit seepage needs liquid-carrying material points");
+  std::vector<std::vector<int>> element_dofs;
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    if (!element_wet[e]) continue;
+    std::vector<int> dofs;
+    for (int a = 0; a < s.nodes_per_element; ++a) dofs.push_back(s.dof_of_node[connectivity(e, a)]);
+    element_dofs.push_back(dofs);
+  }
+  for (int p = 0; p < points.count; ++p) {
+    if (element(p) < 0 || !carriesLiquid(s.table.host(material(p)).phase)) continue;
+    Impl::Point point{};
+    point.index = p;
+    point.material = material(p);
+    point.porosity = porosity(p);
+    point.volume = volume(p);
+    point.shape = shape_h(p);
+    for (int a = 0; a < s.nodes_per_element; ++a) point.dof[a] = s.dof_of_node[point.shape.node[a]];
+    s.liquid_points.push_back(point);
+    s.reference_density = s.table.host(point.material).liquid.density;
+  }
+  s.system = std::make_unique<SeepageLinearSystem>(comm, s.dofs(), element_dofs);
+  s.fixed.assign(s.dofs(), 0);
+  s.switchable.assign(s.dofs(), 0);
+  s.held.assign(s.dofs(), 0);
+  s.fixed_value.assign(s.dofs(), 0.0);
+  s.supply.assign(s.dofs(), 0.0);
+  s.p.assign(s.dofs(), 0.0);
+  setSettings(s.settings);
+  projectPressureFromPoints();
+}
+
+ImplicitSeepageSolver::~ImplicitSeepageSolver() = default;
+
+void ImplicitSeepageSolver::setSettings(const ImplicitSeepageSpec& settings) {
+  impl_->settings = settings;
+  impl_->next_step = settings.initial_step;
+  impl_->system->setSolver(settings.linear);
+}
+
+void ImplicitSeepageSolver::setGravity(Real gravity) {
+  impl_->gravity = gravity;
+}
+
+void ImplicitSeepageSolver::Impl::applyConditions(const SeepageBoundaryConditions& conditions,
+                                                  bool keep_held) {
+  const std::vector<char> was_held = held;
+  std::fill(fixed.begin(), fixed.end(), 0);
+  std::fill(switchable.begin(), switchable.end(), 0);
+  std::fill(held.begin(), held.end(), 0);
+  std::fill(supply.begin(), supply.end(), 0.0);
+  // Nodes outside the active region carry no unknown: their conditions do not apply.
+  for (std::size_t j = 0; j < conditions.supply_nodes.size(); ++j) {
+    const int dof = dof_of_node.at(conditions.supply_nodes[j]);
+    if (dof == kNone) continue;
+    supply[dof] = reference_density * conditions.supplies[j];
+    switchable[dof] = conditions.switchable[j];
+    // A node that stays switchable keeps its switch from the last step (the active set's
+    // starting guess); one that was Dirichlet or free starts free.
+    if (keep_held && switchable[dof]) held[dof] = was_held[dof];
+  }
+  for (std::size_t j = 0; j < conditions.pressure_nodes.size(); ++j) {
+    const int dof = dof_of_node.at(conditions.pressure_nodes[j]);
+    if (dof == kNone) continue;
+    fixed[dof] = 1;
+    fixed_value[dof] = conditions.pressures[j];
+    switchable[dof] = 0;
+    held[dof] = 0;
+    supply[dof] = 0;
+  }
+}
+
+void ImplicitSeepageSolver::setBoundaryConditions(const SeepageBoundaryConditions& conditions) {
+  impl_->plan.reset();
+  impl_->applyConditions(conditions, false);
+}
+
+void ImplicitSeepageSolver::setBoundaryPlan(const SeepageBoundaryPlan& plan) {
+  impl_->plan = std::make_unique<SeepageBoundaryPlan>(plan);
+  impl_->applyConditions(plan.at(impl_->time, impl_->time, impl_->settings.theta), false);
+}
+
+void ImplicitSeepageSolver::beginStage(const StageSpec& stage) {
+  setSettings(stage.seepage);
+  setGravity(stage.gravity);
+  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage));
+  projectPressureFromPoints();
+}
+
+void ImplicitSeepageSolver::projectPressureFromPoints() {
+  Impl& s = *impl_;
+  const auto pressure =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.pressure_liquid);
+  // Consistent L2 projection: sum_p V N_a N_b p_b = sum_p V N_a p_p.
+  s.system->beginAssembly();
+  std::vector<Real> rhs(s.dofs(), 0.0);
+  for (const auto& point : s.liquid_points) {
+    if (!s.touchesOwnedRow(point)) continue;
+    Real local[kMaxElementNodes][kMaxElementNodes] = {};
+    addPointStorageMatrix(point.shape, s.nodes_per_element, point.volume, local);
+    for (int a = 0; a < s.nodes_per_element; ++a) {
+      if (!s.system->owns(point.dof[a])) continue;
+      s.system->add(point.dof[a], point.dof, local[a], s.nodes_per_element);
+      rhs[point.dof[a]] += point.volume * point.shape.value[a] * pressure(point.index);
+    }
+  }
+  s.system->endAssembly();
+  s.system->solve(rhs, s.p);
+}
+
+void ImplicitSeepageSolver::setNodalPressure(const std::function<Real(Real, Real)>& pressure) {
+  Impl& s = *impl_;
+  const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.mesh.coordinates);
+  for (int dof = 0; dof < s.dofs(); ++dof) {
+    const int node = s.node_of_dof[dof];
+    s.p[dof] = pressure(X(node, 0), X(node, 1));
+  }
+}
+
+// ------------------------------------------------------------------ time stepping
+
+SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
+  SeepageStepResult result;
+  const Real theta = settings.theta;
+  // Conditions of the step, at its end (SeepageBoundaryPlan::at); a rejected step restores
+  // the switches and the next attempt re-evaluates them for its own step.
+  const std::vector<char> held_old = held;
+  if (plan) applyConditions(plan->at(time, time + dt, theta), true);
+  const std::vector<Real> p_old = p;
+  const std::vector<Real> flux_old = flux(p_old);
+
+  std::vector<Real> residual(dofs()), terms_scale(dofs());
+  // R = storage/dt + theta F(p) + (1 - theta) F(p_old) - Q (Q on free supply nodes only).
+  auto evaluate = [&]() {
+    const std::vector<Real> s = storage(p, p_old);
+    const std::vector<Real> f = flux(p);
+    for (int i = 0; i < dofs(); ++i) {
+      const Real q = isFixed(i) ? 0.0 : supply[i];
+      residual[i] = s[i] / dt + theta * f[i] + (1 - theta) * flux_old[i] - q;
+      terms_scale[i] = std::fabs(s[i] / dt) + std::fabs(theta * f[i]) +
+                       std::fabs((1 - theta) * flux_old[i]) + std::fabs(q);
+    }
+  };
+  const Real mass_floor = 1e-15 * pointsLiquidMass(p_old) / dt;
+
+  bool settled = false;
+  for (int pass = 0; pass < settings.max_active_set_iterations && !settled; ++pass) {
+    ++result.active_set_passes;
+    for (int i = 0; i < dofs(); ++i)
+      if (isFixed(i)) p[i] = fixedValue(i);
+    bool converged = false;
+    Real last_update = std::numeric_limits<Real>::infinity();
+    for (int m = 0; m <= settings.max_picard_iterations; ++m) {
+      evaluate();
+      Real free_residual = 0, scale = 0;
+      for (int i = 0; i < dofs(); ++i)
+        if (!isFixed(i)) {
+          free_residual += std::fabs(residual[i]);
+          scale += terms_scale[i];
+        }
+      if (m > 0 && last_update <= settings.pressure_tolerance &&
+          free_residual <= std::max(settings.mass_tolerance * scale, mass_floor)) {
+        converged = true;
+        break;
+      }
+      if (m == settings.max_picard_iterations) break;
+      assembleMatrix(p, dt);
+      std::vector<Real> rhs(dofs()), update;
+      for (int i = 0; i < dofs(); ++i) rhs[i] = isFixed(i) ? 0.0 : -residual[i];
+      result.linear_iterations += system->solve(rhs, update);
+      ++result.picard_iterations;
+      last_update = 0;
+      for (int i = 0; i < dofs(); ++i) {
+        p[i] += update[i];
+        last_update = std::max(last_update, std::fabs(update[i]));
+      }
+    }
+    if (!converged) {
+      p = p_old;
+      held = held_old;
+      result.converged = false;
+      return result;
+    }
+    // Signorini switches: a free switchable node may not exceed p = 0; a held one returns to
+    // its supply when the soil would take more than the supply (its residual is the inflow
+    // that holds p = 0).
+    settled = true;
+    for (int i = 0; i < dofs(); ++i) {
+      if (!switchable[i]) continue;
+      if (!held[i] && p[i] > settings.pressure_tolerance) {
+        held[i] = 1;
+        settled = false;
+      } else if (held[i] &&
+                 residual[i] > supply[i] + settings.mass_tolerance * terms_scale[i] + mass_floor) {
+        held[i] = 0;
+        settled = false;
+      }
+    }
+  }
+  if (!settled) {
+    p = p_old;
+    held = held_old;
+    result.converged = false;
+    return result;
+  }
+  // Mass balance of the step: storage change = inflow (supplies + reactions of held and
+  // prescribed nodes) + dt x free-node residual (bounded by the mass tolerance).
+  Real inflow = 0;
+  for (int i = 0; i < dofs(); ++i) inflow += isFixed(i) ? residual[i] : supply[i];
+  result.inflow = inflow * dt;
+  Real storage_change = 0, max_ds = 0;
+  for (const Point& point : liquid_points) {
+    const PointMaterial& mat = material(point);
+    const Real p_new = interpolate(point, p), p_prev = interpolate(point, p_old);
+    storage_change += point.porosity * point.volume * liquidContentChange(mat, p_new, p_prev);
+    max_ds = std::max(max_ds, std::fabs(saturationAndConductivity(mat, p_new).saturation -
+                                        saturationAndConductivity(mat, p_prev).saturation));
+  }
+  result.storage_change = storage_change;
+  result.max_saturation_change = max_ds;
+  result.converged = true;
+  return result;
+}
+
+SeepageStepResult ImplicitSeepageSolver::step(Real dt) {
+  Impl& s = *impl_;
+  const SeepageStepResult result = s.step(dt);
+  if (result.converged) {
+    s.time += dt;
+    ++s.totals.steps;
+    s.totals.inflow += result.inflow;
+    s.totals.storage_change += result.storage_change;
+  } else {
+    ++s.totals.rejected_steps;
+  }
+  s.totals.picard_iterations += result.picard_iterations;
+  s.totals.linear_iterations += result.linear_iterations;
+  return result;
+}
+
+void ImplicitSeepageSolver::advanceTo(Real end) {
+  Impl& s = *impl_;
+  const Real tolerance = 1e-12 * std::max<Real>(std::fabs(end), 1);
+  while (s.time < end - tolerance) {
+    const Real planned =
+        s.settings.adaptive ? std::min(s.next_step, s.settings.max_step) : s.settings.initial_step;
+    const Real dt = std::min(planned, end - s.time);
+    const SeepageStepResult result = step(dt);
+    if (!result.converged) {
+      if (!s.settings.adaptive || dt <= s.settings.min_step) {
+        std::ostringstream out;
+        out << "implicit seepage: the step of " << dt << " s at t = " << s.time
+            << " s did not converge (Picard iterations and active-set passes exhausted)";
+        throw RunError(out.str());
+      }
+      s.next_step = std::max(0.5 * dt, s.settings.min_step);
+      continue;
+    }
+    if (!s.settings.adaptive || dt < planned * (1 - 1e-9)) continue;  // cut to land: keep
+    // Grow when Picard converges fast, shrink when slow; the saturation change caps it.
+    Real factor = result.picard_iterations <= 4 ? 1.5 : result.picard_iterations >= 10 ? 0.6 : 1.0;
+    if (result.max_saturation_change > 0)
+      factor = std::min(factor, s.settings.max_saturation_change / result.max_saturation_change);
+    factor = std::clamp<Real>(factor, 0.3, 2.0);
+    s.next_step = std::min(std::max(dt * factor, s.settings.min_step), s.settings.max_step);
+  }
+}
+
+// ------------------------------------------------------------------ hand-over and queries
+
+void ImplicitSeepageSolver::handOver() {
+  Impl& s = *impl_;
+  auto pressure =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.pressure_liquid);
+  auto density = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.density_liquid);
+  auto saturation = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.saturation);
+  auto conductivity =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.conductivity);
+  auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.mass_liquid);
+  for (const auto& point : s.liquid_points) {
+    const PointMaterial& mat = s.material(point);
+    const Real p = s.interpolate(point, s.p);
+    const LiquidState state = saturationAndConductivity(mat, p);
+    const int i = point.index;
+    pressure(i) = p;
+    density(i) = liquidDensity(mat.liquid, p);  // 4.13
+    saturation(i) = state.saturation;
+    conductivity(i) = state.conductivity;
+    mass(i) = point.porosity * point.volume * liquidContent(mat, p);  // 4.47
+  }
+  Kokkos::deep_copy(s.points.pressure_liquid, pressure);
+  Kokkos::deep_copy(s.points.density_liquid, density);
+  Kokkos::deep_copy(s.points.saturation, saturation);
+  Kokkos::deep_copy(s.points.conductivity, conductivity);
+  Kokkos::deep_copy(s.points.mass_liquid, mass);
+}
+
+Real ImplicitSeepageSolver::time() const {
+  return impl_->time;
+}
+void ImplicitSeepageSolver::setTime(Real time) {
+  impl_->time = time;
+}
+Real ImplicitSeepageSolver::nextStep() const {
+  return impl_->next_step;
+}
+Real ImplicitSeepageSolver::liquidMass() const {
+  return impl_->pointsLiquidMass(impl_->p);
+}
+const SeepageTotals& ImplicitSeepageSolver::totals() const {
+  return impl_->totals;
+}
+int ImplicitSeepageSolver::activeNodeCount() const {
+  return impl_->dofs();
+}
+
+std::vector<Real> ImplicitSeepageSolver::nodalPressure() const {
+  std::vector<Real> out(impl_->mesh.numNodes(), std::numeric_limits<Real>::quiet_NaN());
+  for (int dof = 0; dof < impl_->dofs(); ++dof) out[impl_->node_of_dof[dof]] = impl_->p[dof];
+  return out;
+}
+
+std::vector<int> ImplicitSeepageSolver::heldNodes() const {
+  std::vector<int> out;
+  for (int dof = 0; dof < impl_->dofs(); ++dof)
+    if (impl_->held[dof]) out.push_back(impl_->node_of_dof[dof]);
+  return out;
+}
+
+}  // namespace argine

@@ -1,0 +1,193 @@
+#include "SeepageLinearSystem.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Ifpack2_Factory.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "argine/core/Error.hpp"
+
+namespace argine {
+
+struct SeepageLinearSystem::Tpetra {
+  using Map = ::Tpetra::Map<>;
+  using LO = Map::local_ordinal_type;
+  using GO = Map::global_ordinal_type;
+  using Node = Map::node_type;
+  using Graph = ::Tpetra::CrsGraph<LO, GO, Node>;
+  using Matrix = ::Tpetra::CrsMatrix<Real, LO, GO, Node>;
+  using RowMatrix = ::Tpetra::RowMatrix<Real, LO, GO, Node>;
+  using Vector = ::Tpetra::Vector<Real, LO, GO, Node>;
+  using MV = ::Tpetra::MultiVector<Real, LO, GO, Node>;
+  using OP = ::Tpetra::Operator<Real, LO, GO, Node>;
+  using Import = ::Tpetra::Import<LO, GO, Node>;
+  using Preconditioner = Ifpack2::Preconditioner<Real, LO, GO, Node>;
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm;
+  Teuchos::RCP<const Map> rows, everywhere;
+  Teuchos::RCP<const Import> to_everywhere;
+  Teuchos::RCP<Graph> graph;
+  Teuchos::RCP<Matrix> matrix;
+  Teuchos::RCP<Vector> b, x;
+  Teuchos::RCP<Vector> x_everywhere;
+  Teuchos::RCP<Preconditioner> preconditioner;
+  Teuchos::RCP<Belos::SolverManager<Real, MV, OP>> solver;
+};
+
+SeepageLinearSystem::SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> comm, int num_dofs,
+                                         const std::vector<std::vector<int>>& element_dofs)
+    : t_(std::make_unique<Tpetra>()), num_dofs_(num_dofs) {
+  using T = Tpetra;
+  t_->comm = comm.is_null() ? ::Tpetra::getDefaultComm() : comm;
+  const int ranks = t_->comm->getSize(), rank = t_->comm->getRank();
+  // Contiguous blocks of rows: the first (num_dofs % ranks) ranks get one more.
+  const int base = num_dofs / ranks, extra = num_dofs % ranks;
+  first_ = rank * base + std::min(rank, extra);
+  end_ = first_ + base + (rank < extra ? 1 : 0);
+  t_->rows = Teuchos::rcp(new T::Map(static_cast<::Tpetra::global_size_t>(num_dofs),
+                                     static_cast<size_t>(end_ - first_), 0, t_->comm));
+  std::vector<T::GO> all(num_dofs);
+  for (int i = 0; i < num_dofs; ++i) all[i] = i;
+  t_->everywhere =
+      Teuchos::rcp(new T::Map(Teuchos::OrdinalTraits<::Tpetra::global_size_t>::invalid(),
+                              Teuchos::ArrayView<const T::GO>(all.data(), num_dofs), 0, t_->comm));
+  t_->to_everywhere = Teuchos::rcp(new T::Import(t_->rows, t_->everywhere));
+
+  // The graph: each owned row couples to every unknown of the elements holding it.
+  std::vector<std::set<T::GO>> columns(end_ - first_);
+  for (const auto& dofs : element_dofs)
+    for (const int row : dofs)
+      if (owns(row))
+        for (const int col : dofs) columns[row - first_].insert(col);
+  size_t widest = 1;
+  for (const auto& row : columns) widest = std::max(widest, row.size());
+  t_->graph = Teuchos::rcp(new T::Graph(t_->rows, widest));
+  for (int row = first_; row < end_; ++row) {
+    auto& set = columns[row - first_];
+    set.insert(row);  // a diagonal even for an unknown of no element (never happens)
+    const std::vector<T::GO> cols(set.begin(), set.end());
+    t_->graph->insertGlobalIndices(row, Teuchos::ArrayView<const T::GO>(cols));
+  }
+  t_->graph->fillComplete();
+  t_->matrix = Teuchos::rcp(new T::Matrix(t_->graph));
+  t_->matrix->fillComplete();
+  t_->b = Teuchos::rcp(new T::Vector(t_->rows));
+  t_->x = Teuchos::rcp(new T::Vector(t_->rows));
+  t_->x_everywhere = Teuchos::rcp(new T::Vector(t_->everywhere));
+  setSolver(spec_);
+}
+
+SeepageLinearSystem::~SeepageLinearSystem() = default;
+
+int SeepageLinearSystem::rank() const {
+  return t_->comm->getRank();
+}
+
+void SeepageLinearSystem::setSolver(const LinearSolverSpec& spec) {
+  using T = Tpetra;
+  spec_ = spec;
+  auto params = Teuchos::rcp(new Teuchos::ParameterList);
+  params->set("Convergence Tolerance", spec.tolerance);
+  params->set("Maximum Iterations", spec.max_iterations);
+  if (spec.solver == "GMRES") {
+    params->set("Num Blocks", std::min(spec.max_iterations, 300));
+    params->set("Maximum Restarts", std::max(1, spec.max_iterations / 300 + 1));
+  }
+  Belos::SolverFactory<Real, T::MV, T::OP> factory;
+  t_->solver = factory.create(spec.solver, params);
+
+  t_->preconditioner = Teuchos::null;
+  preconditioner_initialised_ = false;
+  if (spec.preconditioner == "NONE") return;
+  Teuchos::ParameterList prec;
+  if (spec.preconditioner == "RILUK") {
+    prec.set("fact: iluk level-of-fill", spec.fill_level);
+  } else if (spec.preconditioner == "ILUT") {
+    prec.set("fact: ilut level-of-fill", 1.0 + spec.fill_level);
+    prec.set("fact: drop tolerance", 0.0);
+  } else if (spec.preconditioner == "RELAXATION") {
+    prec.set("relaxation: type", spec.relaxation);
+    prec.set("relaxation: sweeps", spec.sweeps);
+  } else if (spec.preconditioner == "CHEBYSHEV") {
+    prec.set("chebyshev: degree", spec.sweeps);
+  }
+  t_->preconditioner = Ifpack2::Factory::create<T::RowMatrix>(spec.preconditioner, t_->matrix);
+  t_->preconditioner->setParameters(prec);
+}
+
+void SeepageLinearSystem::beginAssembly() {
+  t_->matrix->resumeFill();
+  t_->matrix->setAllToScalar(0.0);
+}
+
+void SeepageLinearSystem::add(int row, const int* cols, const Real* vals, int count) {
+  using GO = Tpetra::GO;
+  GO global_cols[16];
+  for (int j = 0; j < count; ++j) global_cols[j] = cols[j];
+  t_->matrix->sumIntoGlobalValues(static_cast<GO>(row),
+                                  Teuchos::ArrayView<const GO>(global_cols, count),
+                                  Teuchos::ArrayView<const Real>(vals, count));
+}
+
+void SeepageLinearSystem::endAssembly() {
+  t_->matrix->fillComplete();
+}
+
+int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x) {
+  using T = Tpetra;
+  {
+    auto bv = t_->b->getDataNonConst();
+    for (int row = first_; row < end_; ++row) bv[row - first_] = b[row];
+  }
+  t_->x->putScalar(0.0);
+  auto problem = Teuchos::rcp(new Belos::LinearProblem<Real, T::MV, T::OP>(
+      t_->matrix, Teuchos::rcp_static_cast<T::MV>(t_->x),
+      Teuchos::rcp_static_cast<const T::MV>(t_->b)));
+  if (!t_->preconditioner.is_null()) {
+    if (!preconditioner_initialised_) {
+      t_->preconditioner->initialize();  // symbolic: the graph never changes
+      preconditioner_initialised_ = true;
+    }
+    t_->preconditioner->compute();
+    if (spec_.solver == "CG")
+      problem->setLeftPrec(t_->preconditioner);
+    else
+      problem->setRightPrec(t_->preconditioner);
+  }
+  problem->setProblem();
+  t_->solver->setProblem(problem);
+  const Belos::ReturnType result = t_->solver->solve();
+  // Pseudo-block GMRES reports "unconverged" after a loss-of-accuracy warning although its
+  // residual met the tolerance; Picard recomputes the true residual anyway.
+  if (result != Belos::Converged && !(t_->solver->achievedTol() <= spec_.tolerance)) {
+    std::ostringstream out;
+    out << "implicit seepage: " << spec_.solver << " did not reach the relative tolerance "
+        << spec_.tolerance << " in " << spec_.max_iterations << " iterations (reached "
+        << t_->solver->achievedTol() << ", |b| = " << t_->b->norm2() << ")";
+    throw RunError(out.str());
+  }
+  t_->x_everywhere->doImport(*t_->x, *t_->to_everywhere, ::Tpetra::INSERT);
+  x.assign(num_dofs_, 0.0);
+  const auto xv = t_->x_everywhere->getData();
+  for (int i = 0; i < num_dofs_; ++i) x[i] = xv[i];
+  return t_->solver->getNumIters();
+}
+
+void SeepageLinearSystem::sumOverRanks(std::vector<Real>& v) const {
+  if (t_->comm->getSize() == 1) return;
+  std::vector<Real> sum(v.size());
+  Teuchos::reduceAll<int, Real>(*t_->comm, Teuchos::REDUCE_SUM, static_cast<int>(v.size()),
+                                v.data(), sum.data());
+  v.swap(sum);
+}
+
+}  // namespace argine

@@ -1,0 +1,54 @@
+#pragma once
+// The implicit seepage path's sparse system: a Tpetra CrsMatrix on the active nodes (rows in
+// contiguous blocks per rank, graph from the elements holding liquid points), Belos solvers
+// and Ifpack2 preconditioners chosen by a LinearSolverSpec. Private to the seepage room.
+
+#include <memory>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "argine/core/Types.hpp"
+#include "argine/input/Deck.hpp"
+
+namespace argine {
+
+class SeepageLinearSystem {
+ public:
+  /// `element_dofs`: the unknowns of each element that holds liquid points (the graph couples
+  /// all unknowns of an element).
+  SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> comm, int num_dofs,
+                      const std::vector<std::vector<int>>& element_dofs);
+  ~SeepageLinearSystem();
+
+  int firstOwned() const { return first_; }
+  int endOwned() const { return end_; }
+  bool owns(int dof) const { return dof >= first_ && dof < end_; }
+  int rank() const;
+
+  void setSolver(const LinearSolverSpec& spec);
+
+  /// Zeroes the matrix for a new assembly.
+  void beginAssembly();
+  /// Adds vals[j] to A(row, cols[j]) (row owned by this rank).
+  void add(int row, const int* cols, const Real* vals, int count);
+  void endAssembly();
+
+  /// Solves A x = b; b holds every unknown, only owned rows are read. x (every unknown) is
+  /// returned on every rank. Returns the Krylov iterations; throws RunError when Belos does
+  /// not converge.
+  int solve(const std::vector<Real>& b, std::vector<Real>& x);
+
+  /// Sums v over the ranks (each rank filled its own rows).
+  void sumOverRanks(std::vector<Real>& v) const;
+
+ private:
+  struct Tpetra;
+  std::unique_ptr<Tpetra> t_;
+  int first_ = 0, end_ = 0, num_dofs_ = 0;
+  LinearSolverSpec spec_;
+  bool preconditioner_initialised_ = false;
+};
+
+}  // namespace argine
