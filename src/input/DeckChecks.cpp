@@ -32,6 +32,29 @@ bool insideBox(const std::array<Real, 2>& point, const GeneratorSpec& generator)
   return true;
 }
 
+/// A count to 3 digits ("1e+11").
+std::string roughly(Real count) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", count);
+  return text;
+}
+
+/// The generator makes about (width / h) (height / h) squares (twice as many triangles). Far
+/// more than a run can hold, or than int node numbers reach, is a typo in Element Size (P8).
+void checkGeneratedMeshSize(const GeneratorSpec& generator) {
+  constexpr Real kMostGeneratedSquares = 1e8;
+  const Real h = generator.element_size;
+  const Real width = generator.upper_right[0] - generator.lower_left[0];
+  const Real height = generator.upper_right[1] - generator.lower_left[1];
+  const Real squares = (width / h) * (height / h);
+  if (!(squares <= kMostGeneratedSquares))
+    throw InputError("Mesh/Generate/Element Size (m)",
+                     formatReal(h) + " m in a box of " + formatReal(width) + " m x " +
+                         formatReal(height) + " m would make about " + roughly(squares) +
+                         " elements; at most " + roughly(kMostGeneratedSquares) +
+                         " are allowed (is the size in metres?)");
+}
+
 }  // namespace
 
 void checkOneMaterialPerBlock(const Deck& deck) {
@@ -53,6 +76,7 @@ void checkMeshSpec(const MeshSpec& mesh) {
                        std::string(axes[d]) + " must exceed that of Lower Left (m) (" +
                            formatReal(generator.lower_left[d]) + "), got " +
                            formatReal(generator.upper_right[d]));
+  checkGeneratedMeshSize(generator);
   for (const auto& region : generator.regions) {
     const std::string where = "Mesh/Generate/Regions/" + region.block + "/Vertices (m)";
     if (region.block == "empty")

@@ -627,6 +627,7 @@ ListSchema sectionProbeKeys() {
                   .require());
   section.add(KeySpec::integer("Samples", "sample positions of a profile (ends included)")
                   .atLeast(2)
+                  .atMost(100000)
                   .when("Type", {"profile"})
                   .byDefault(10LL));
   return section;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 
 #include <Teuchos_ParameterList.hpp>
@@ -218,6 +219,11 @@ class Validator {
     }
     if (std::isfinite(*value) && std::trunc(*value) != *value) wrongType(entry, key, path);
     checkNumber(*value, key, path);
+    // argine stores counts as int: a larger value would wrap around silently (P8).
+    constexpr double kLargestInt = std::numeric_limits<int>::max();
+    if (!(std::fabs(*value) <= kLargestInt))
+      throw InputError(path, "must be an integer between -" + formatReal(kLargestInt) + " and " +
+                                 formatReal(kLargestInt) + ", got " + formatReal(*value));
     if (key.allowed_integers.empty()) return;
     for (long long allowed : key.allowed_integers)
       if (static_cast<double>(allowed) == *value) return;

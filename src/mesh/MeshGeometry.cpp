@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "argine/core/Error.hpp"
+#include "argine/mesh/MeshFolds.hpp"
 
 namespace argine {
 
@@ -198,6 +199,7 @@ void checkMeshQuality(const Mesh& mesh, const std::string& source) {
   std::vector<int> list;
   const Side overshared = matchSides(connectivity, elements, per, list);
   if (overshared.element >= 0) throw InputError(source, describeSide(overshared));
+  checkNoFoldedElements(mesh, source);  // (P8) tangled meshes
 }
 
 }  // namespace argine

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "argine/boundary/DeckTimeSeriesCheck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/init/Initialisation.hpp"
 #include "argine/input/DeckWords.hpp"
@@ -50,7 +51,9 @@ void checkDeckSupported(const Deck& deck) {
   // Every solid model has a stress update (materials/SolidModel.hpp isImplemented); every
   // solver kind, including 'implicit seepage', runs; the hydraulic kinds (total head, pressure
   // series, infiltration, seepage face) are supported by the explicit and the implicit stages.
-  (void)deck;
+  // The time series of all stages are read now (P8): a bad gauge file of a later stage is an
+  // input error before the first stage runs.
+  checkDeckTimeSeries(deck);
 }
 
 Simulation::Simulation(const Deck& deck, const RunOptions& options)

@@ -56,7 +56,7 @@ Kokkos::View<int**, MemSpace> computeElementNeighbours(const Mesh& mesh);
 /// when an element is degenerate (|area| <= 1e-12 longest side^2), inverted (clockwise
 /// nodes) or, for Quad4, non-convex (a corner with non-positive Jacobian, where the
 /// bilinear map folds over); or when an edge is shared by more than two elements; or when
-/// a connectivity entry is not a node index.
+/// a connectivity entry is not a node index; or when two elements overlap (MeshFolds.hpp).
 void checkMeshQuality(const Mesh& mesh, const std::string& source);
 
 }  // namespace argine

@@ -1,0 +1,13 @@
+#include "argine/boundary/DeckTimeSeriesCheck.hpp"
+
+#include "argine/boundary/HydraulicConditions.hpp"
+
+namespace argine {
+
+void checkDeckTimeSeries(const Deck& deck) {
+  for (const StageSpec& stage : deck.stages)
+    for (const BoundarySpec& boundary : stage.boundaries)
+      (void)makeTimeSeries(boundary.hydraulic.series);  // throws InputError(where) when bad
+}
+
+}  // namespace argine
