@@ -1,0 +1,92 @@
+// [Meshio] Hostile mesh files (issue P8): an inverted element among counter-clockwise ones
+// (the reader reorders it, and the mesh then overlaps), empty, truncated and non-Exodus
+// files. Each gives an InputError naming the file.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "argine/core/Error.hpp"
+#include "argine/mesh/MeshGeometry.hpp"
+#include "argine/meshio/ExodusMesh.hpp"
+#include "argine/meshio/MeshGenerators.hpp"
+
+namespace argine {
+namespace {
+
+std::string scratchFile(const std::string& name) {
+  return std::string(ARGINE_BINARY_DIR) + "/tests/meshio_hostile_" + name;
+}
+
+/// Two triangles (0 1 2) and (1 3 2) sharing the side 1-2, with node 3 at `corner`.
+Mesh twoTriangles(std::array<double, 2> corner) {
+  const std::vector<std::array<double, 2>> nodes{{0, 0}, {1, 0}, {0, 1}, corner};
+  Mesh mesh;
+  mesh.type = ElementType::Tri3;
+  mesh.coordinates = Kokkos::View<Real* [kDim], MemSpace>("x", nodes.size());
+  mesh.connectivity = Kokkos::View<int**, MemSpace>("conn", 2, 3);
+  mesh.element_block = Kokkos::View<int*, MemSpace>("block", 2);
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    for (int d = 0; d < 2; ++d) mesh.coordinates(n, d) = nodes[n][d];
+  const int conn[2][3] = {{0, 1, 2}, {1, 3, 2}};
+  for (int e = 0; e < 2; ++e)
+    for (int k = 0; k < 3; ++k) mesh.connectivity(e, k) = conn[e][k];
+  mesh.blocks = {{"soil", 1, {0, 1}}};
+  return mesh;
+}
+
+TEST(HostileMesh, AnInvertedElementAmongCounterClockwiseOnesIsReported) {
+  const std::string path = scratchFile("inverted.exo");
+  // Node 3 at (1, 1): both triangles counter-clockwise; the file reads and passes.
+  writeExodusMesh(path, twoTriangles({1, 1}));
+  EXPECT_NO_THROW(checkMeshQuality(readExodusMesh(path), path));
+  // Node 3 at (0.2, 0.2), on node 0's side of 1-2: triangle 2 is inverted (signed area
+  // (1/2)((0.2-1)(1-0) - (0.2-0)(0-1)) = (1/2)(-0.8 + 0.2) = -0.3). Reordered on reading,
+  // it runs 1 -> 2 like triangle 1, so the two overlap.
+  writeExodusMesh(path, twoTriangles({0.2, 0.2}));
+  try {
+    checkMeshQuality(readExodusMesh(path), path);
+    ADD_FAILURE() << "an overlapping (inverted) element was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), path);
+    const std::string message = error.what();
+    EXPECT_NE(message.find("element 1 (block soil) and element 2 (block soil)"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("from node 2 to node 3"), std::string::npos) << message;
+    EXPECT_NE(message.find("inverted"), std::string::npos) << message;
+  }
+}
+
+TEST(HostileMesh, EmptyTruncatedAndForeignFilesNameTheFile) {
+  GeneratorSpec generator;
+  generator.element_size = 0.5;
+  const std::string good = scratchFile("good.exo");
+  writeExodusMesh(good, generateMesh(generator));
+  std::ifstream in(good, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 64u);
+  const std::vector<std::string> contents{
+      "",                                // empty
+      bytes.substr(0, bytes.size() / 2),  // truncated in the data
+      bytes.substr(0, 40),                // truncated in the header
+      "argine:\n  Title: a deck, not a mesh\n",
+      std::string(4096, '\0'),
+  };
+  for (std::size_t k = 0; k < contents.size(); ++k) {
+    SCOPED_TRACE(k);
+    const std::string path = scratchFile("bad" + std::to_string(k) + ".exo");
+    std::ofstream(path, std::ios::binary) << contents[k];
+    try {
+      checkMeshQuality(readExodusMesh(path), path);
+      ADD_FAILURE() << "a bad mesh file was read";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.where(), path) << error.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace argine
