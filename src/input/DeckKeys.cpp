@@ -648,6 +648,34 @@ ListSchema probeKeys() {
 
 // ---- end of issue P4 deck keys ----
 
+// ---- issue P8: physical guards ----
+
+ListSchema guardKeys() {
+  ListSchema guards;
+  guards.add(KeySpec::choice("Points Leaving Mesh", Words{"stop", "remove"},
+                             "material points that leave the background mesh: stop (the run "
+                             "ends with an error naming time, step, point id and position; the "
+                             "last output is kept) or remove (taken out of the computation: "
+                             "velocities and masses set to zero; counted in the log and in "
+                             "the diagnostics' lost_points)")
+                 .byDefault(std::string("stop")));
+  guards.add(KeySpec::real("Mass Balance Bound", "-",
+                           "warn once when |liquid storage change - net inflow through the "
+                           "nodes| exceeds this fraction of the initial liquid volume "
+                           "(checked in explicit stages of runs with hydraulic conditions)")
+                 .above(0)
+                 .byDefault(1e-3));
+  guards.add(KeySpec::real("Kinetic Energy Bound", "-",
+                           "warn once when the kinetic energy exceeds this fraction of the "
+                           "stage's energy scale (weight x mesh extent + stored energy; the "
+                           "run stops at 10 x the scale)")
+                 .above(0)
+                 .byDefault(0.1));
+  return guards;
+}
+
+// ---- end of issue P8 deck keys ----
+
 ListSchema makeDeckSchema() {
   ListSchema deck;
   deck.add(
@@ -666,6 +694,7 @@ ListSchema makeDeckSchema() {
   deck.add(KeySpec::sublist("Initialisation", initialisationKeys(),
                             "initial stress and liquid pressure of the points"));
   deck.add(KeySpec::sublist("Probes", probeKeys(), "CSV time series of points and sections"));
+  deck.add(KeySpec::sublist("Guards", guardKeys(), "physical guards checked after each step"));
   checkSchema(deck);
   return deck;
 }

@@ -26,6 +26,9 @@ void parseStageAdditions(const DeckSection& section, StageSpec& stage);
 void checkStageAdditions(const Deck& deck);
 // ---- end of issue P4 ----
 
+/// (P8) `Guards` -> GuardsSpec (DeckGuards.cpp).
+GuardsSpec parseGuards(const DeckSection& guards);
+
 /// Throws when two materials name the same block.
 void checkOneMaterialPerBlock(const Deck& deck);
 

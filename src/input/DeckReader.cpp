@@ -153,6 +153,7 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
   deck.output = parseOutput(top.section("Output"));
   deck.initialisation = parseInitialisation(top.section("Initialisation"));  // issue P4
   deck.probes = parseProbes(top.section("Probes"));                          // issue P4
+  deck.guards = parseGuards(top.section("Guards"));                          // issue P8
   checkDeck(deck);
   return deck;
 }

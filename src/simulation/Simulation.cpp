@@ -21,6 +21,7 @@
 #include "argine/seepage/ImplicitSeepageSolver.hpp"
 #include "argine/simulation/MaterialChanges.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
+#include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Setup.hpp"
 #include "argine/timestep/Criteria.hpp"
 
@@ -122,6 +123,7 @@ void Simulation::runStage(const StageSpec& stage) {
   applyStageMaterialChanges(stage);  // (P4) before beginStage: its energy scale sees them
   solver_->beginStage(stage);
   if (!initial_output_written_) writeInitialOutput();
+  beginStageGuards(stage);  // (P8)
   std::unique_ptr<RelaxationMonitor> relaxation;
   std::unique_ptr<MaterialTable> relaxation_table;
   if (stage.relaxation.enabled) {
@@ -147,6 +149,7 @@ void Simulation::runStage(const StageSpec& stage) {
     dt = std::min(dt, std::min(next_output, end) - solver_->time());
     solver_->step(dt);
     accumulateBoundaryFluxes();
+    checkGuards(stage);  // (P8) before any output of this step
     ++summary_.steps;
     summary_.point_updates += points_.count;
     bool written = false;

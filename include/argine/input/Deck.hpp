@@ -281,6 +281,24 @@ struct OutputSpec {
   std::string name = "argine";        ///< file stem: <name>_grid.e, <name>_points.e
 };
 
+// ---- physical guards of a run (issue P8) ----
+
+/// What happens when material points leave the background mesh.
+enum class LeavingPoints {
+  Stop,    ///< RunError naming time, step, point id and position; the last output is kept
+  Remove,  ///< taken out of the computation (velocities and masses zeroed), counted in the log
+};
+
+/// Bounds checked after every explicit step; each warns once per run, with the numbers.
+struct GuardsSpec {
+  LeavingPoints leaving_points = LeavingPoints::Stop;
+  /// |liquid storage change - net inflow| / initial liquid volume (runs with hydraulic
+  /// conditions, where the net inflow is known).
+  Real mass_balance_bound = 1e-3;
+  /// kinetic energy / the stage's energy scale (the run stops at 10 x the scale).
+  Real kinetic_energy_bound = 0.1;
+};
+
 struct Deck {
   std::string path;  ///< the deck file (absolute)
   std::string title;
@@ -290,6 +308,7 @@ struct Deck {
   OutputSpec output;
   InitialisationSpec initialisation;  ///< (P4)
   ProbesSpec probes;                  ///< (P4)
+  GuardsSpec guards;                  ///< (P8)
 };
 
 }  // namespace argine

@@ -156,6 +156,8 @@ class ExplicitTwoPhaseSolver {
   const std::vector<Real>& boundaryFluxVolumes() const { return boundary_flux_volumes_; }
   /// rho_L converting liquid masses to volumes: that of the first liquid-carrying material.
   Real referenceLiquidDensity() const { return reference_liquid_density_; }
+  /// The stage's energy scale (J/m) of the instability bound (StabilityCheck.hpp).
+  Real stageEnergyScale() const { return energy_scale_; }
   /// The nodal fields of the hydraulic conditions of the last step (4.51, n_L, G_i).
   const BoundaryGradientFields& boundaryGradients() const { return boundary_fields_; }
 

@@ -20,6 +20,7 @@ class ResultsWriter;
 class CsvWriter;
 class ProgressReporter;
 class ProbeWriter;
+class RunGuards;
 
 /// Options of `argine run` that are not part of the deck.
 struct RunOptions {
@@ -75,6 +76,9 @@ class Simulation {
   void applyStageMaterialChanges(const StageSpec& stage);
   void writeInitialOutput();
   void writeProbes();
+  // issue P8: physical guards (SimulationGuards.cpp)
+  void beginStageGuards(const StageSpec& stage);
+  void checkGuards(const StageSpec& stage);
 
   Deck deck_;
   RunOptions options_;
@@ -96,6 +100,7 @@ class Simulation {
   Real next_probe_time_ = 0;                  ///< (P4)
   Real initial_time_step_ = 0;  ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
+  std::unique_ptr<RunGuards> guards_;  ///< (P8)
 };
 
 /// Throws InputError for anything the deck asks for that this build cannot run yet: a

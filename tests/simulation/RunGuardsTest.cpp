@@ -1,0 +1,144 @@
+// Issue P8: the physical guards of a run. The liquid balance and kinetic energy warnings
+// (once, with value, bound, time and step), and points leaving the mesh: stop (RunError
+// naming time, step, point id and position; the output so far is kept) or remove (counted
+// in the log, the run goes on).
+#include <gtest/gtest.h>
+
+#include <Teuchos_YamlParameterListCoreHelpers.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "argine/core/Error.hpp"
+#include "argine/input/DeckReader.hpp"
+#include "argine/simulation/RunGuards.hpp"
+#include "argine/simulation/Simulation.hpp"
+
+namespace argine {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(RunGuards, MassBalanceWarnsOnceWithItsNumbers) {
+  GuardsSpec spec;  // default bound 1e-3
+  RunGuards guards(spec);
+  // Stage starts with 10 m3/m stored, 2 m3/m net inflow so far, initial volume 100 m3/m.
+  guards.beginStage(10.0, 2.0, 100.0);
+  // storage +0.05, inflow +0.0: error 0.05 / 100 = 5e-4 <= 1e-3
+  EXPECT_EQ(guards.checkMassBalance(10.05, 2.0, {1.0, 10, "flood"}), "");
+  // storage +0.20, inflow +0.05: error 0.15 / 100 = 1.5e-3 > 1e-3
+  const std::string warning = guards.checkMassBalance(10.2, 2.05, {2.5, 17, "flood"});
+  EXPECT_TRUE(contains(warning, "liquid mass balance error 0.0015")) << warning;
+  EXPECT_TRUE(contains(warning, "Guards/Mass Balance Bound 0.001")) << warning;
+  EXPECT_TRUE(contains(warning, "at t = 2.5 s (step 17, stage 'flood')")) << warning;
+  EXPECT_TRUE(contains(warning, "storage change 0.2")) << warning;
+  // once per run, even when worse or in a later stage
+  EXPECT_EQ(guards.checkMassBalance(20.0, 2.0, {3.0, 20, "flood"}), "");
+  guards.beginStage(20.0, 2.0, 100.0);
+  EXPECT_EQ(guards.checkMassBalance(30.0, 2.0, {4.0, 30, "later"}), "");
+}
+
+TEST(RunGuards, KineticEnergyWarnsOnceAboveTheFractionOfTheScale) {
+  GuardsSpec spec;
+  spec.kinetic_energy_bound = 0.2;
+  RunGuards guards(spec);
+  // scale 50 J/m: bound 0.2 x 50 = 10 J/m
+  EXPECT_EQ(guards.checkKineticEnergy(10.0, 50.0, {0.1, 3, "s"}), "");
+  const std::string warning = guards.checkKineticEnergy(12.5, 50.0, {0.2, 4, "s"});
+  EXPECT_TRUE(contains(warning, "kinetic energy 12.5 J/m exceeds Guards/Kinetic Energy Bound 0.2"))
+      << warning;
+  EXPECT_TRUE(contains(warning, "energy scale 50 J/m = 10 J/m at t = 0.2 s (step 4")) << warning;
+  EXPECT_EQ(guards.checkKineticEnergy(40.0, 50.0, {0.3, 5, "s"}), "");
+}
+
+// A saturated column 0.1 m x 1 m with no support: it falls under gravity and its lowest
+// points leave the mesh through the bottom after about sqrt(2 x 0.021 / 9.81) = 0.066 s.
+const std::string kFallingColumn = R"(argine:
+  Mesh:
+    Generate: {Type: rectangle, Element: quad4, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right (m): [0.1, 1.0]}
+  Materials:
+    soil:
+      Block: soil
+      Points Per Element: 4
+      Porosity: 0.4
+      Solid Density (kg/m3): 2700
+      Solid: {Model: linear elastic, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.0}
+      Conductivity: {Saturated Conductivity (m/s): 1.0e-3}
+  Stages:
+    fall:
+      Solver: explicit
+      Duration (s): 0.2
+      Output Interval (s): 0.02
+  Output: {Name: fall}
+)";
+
+std::filesystem::path freshDirectory(const std::string& name) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / ("argine_guards_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+Deck fallingColumn(const std::string& guards) {
+  return parseDeck(*Teuchos::getParametersFromYamlString(kFallingColumn + guards), "");
+}
+
+TEST(RunGuards, PointsLeavingTheMeshStopTheRunByDefault) {
+  RunOptions options;
+  options.output_directory = freshDirectory("stop").string();
+  options.quiet = true;
+  Simulation simulation(fallingColumn(""), options);
+  try {
+    simulation.run();
+    ADD_FAILURE() << "the run went on with points outside the mesh";
+  } catch (const RunError& error) {
+    const std::string message = error.what();
+    EXPECT_TRUE(contains(message, "material point(s) left the background mesh at t = ")) << message;
+    EXPECT_TRUE(contains(message, "(step ")) << message;
+    EXPECT_TRUE(contains(message, "stage 'fall'")) << message;
+    EXPECT_TRUE(contains(message, "first point id ")) << message;
+    EXPECT_TRUE(contains(message, "the last output is kept")) << message;
+    // The point named lies below the mesh (y < 0).
+    const auto at = message.find("first point id ");
+    const auto comma = message.find(", ", message.find(" at (", at));
+    EXPECT_LT(std::stod(message.substr(comma + 2)), 0.0) << message;
+  }
+  // the output written before the stop is there
+  EXPECT_TRUE(std::filesystem::exists(simulation.pointsPath())) << simulation.pointsPath();
+}
+
+TEST(RunGuards, PointsLeavingTheMeshAreRemovedAndCountedWhenTheDeckSaysSo) {
+  RunOptions options;
+  options.output_directory = freshDirectory("remove").string();
+  options.quiet = true;
+  Simulation simulation(
+      fallingColumn("  Guards: {Points Leaving Mesh: remove, Kinetic Energy Bound: 0.01}\n"),
+      options);
+  ASSERT_NO_THROW(simulation.run());
+  const auto& log = simulation.stageLog();
+  const auto removed = std::count_if(log.begin(), log.end(), [](const std::string& line) {
+    return contains(line, "left the background mesh") &&
+           contains(line, "removed from the computation");
+  });
+  EXPECT_GE(removed, 1);
+  const auto energy = std::count_if(log.begin(), log.end(), [](const std::string& line) {
+    return contains(line, "warning: kinetic energy");
+  });
+  EXPECT_EQ(energy, 1);  // a free fall: far above 1 % of the scale, warned once
+  // The points outside are out of the computation: no velocity.
+  const MaterialPoints& points = simulation.points();
+  const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
+  const auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.velocity_solid);
+  int outside = 0;
+  for (int p = 0; p < points.count; ++p)
+    if (element(p) < 0) {
+      ++outside;
+      EXPECT_EQ(v(p, 1), 0.0);
+    }
+  EXPECT_GT(outside, 0);
+}
+
+}  // namespace
+}  // namespace argine
