@@ -10,6 +10,7 @@ packages=(
   libexodusii-dev libnetcdf-dev
   libeigen3-dev libgtest-dev
   python3 python3-matplotlib python3-scipy
+  clang libclang-rt-14-dev   # the libFuzzer targets of the `fuzz` tests (scripts/fuzz.sh)
 )
 packages+=("$@")   # callers may ask for more (e.g. the ParaView check)
 

@@ -656,7 +656,7 @@ ListSchema guardKeys() {
                              "material points that leave the background mesh: stop (the run "
                              "ends with an error naming time, step, point id and position; the "
                              "last output is kept) or remove (taken out of the computation: "
-                             "velocities and masses set to zero; counted in the log and in "
+                             "velocities set to zero, frozen where they left; counted in the log and in "
                              "the diagnostics' lost_points)")
                  .byDefault(std::string("stop")));
   guards.add(KeySpec::real("Mass Balance Bound", "-",
