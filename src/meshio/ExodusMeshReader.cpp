@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +27,9 @@ struct ExodusFile {
   int id;
   ~ExodusFile() { ex_close(id); }
 };
+
+/// Exodus II names are netCDF names: at most NC_MAX_NAME = 256 bytes with the terminator.
+constexpr int64_t kLongestName = 255;
 
 /// Reads things from one open file; every failure becomes an InputError naming the file.
 class Reader {
@@ -53,6 +58,10 @@ class Reader {
     // The requested length may be library-wide (exodus 6), so the buffers take the larger
     // of it and the file's longest name.
     const int64_t used = ex_inquire_int(exoid_, EX_INQ_DB_MAX_USED_NAME_LENGTH);
+    if (used > kLongestName)  // a damaged attribute would size huge buffers
+      throw InputError(path_, "the file says its names are up to " + std::to_string(used) +
+                                  " characters long; Exodus names have at most " +
+                                  std::to_string(kLongestName));
     if (used > MAX_NAME_LENGTH) ex_set_max_name_length(exoid_, static_cast<int>(used));
     const int64_t requested = ex_inquire_int(exoid_, EX_INQ_MAX_READ_NAME_LENGTH);
     const std::size_t length = static_cast<std::size_t>(
@@ -105,6 +114,33 @@ void checkUniqueNames(const std::string& path, const std::vector<std::string>& n
   }
 }
 
+/// The header's counts must be possible: positive where needed, within int, and not more
+/// than the file can hold (each node has 2 coordinates of io_ws bytes, each element at least
+/// 3 node numbers of 4 bytes). A damaged header otherwise asks for gigabytes (P8 fuzzing).
+void checkHeaderCounts(const std::string& path, const ex_init_params& init, int io_ws) {
+  const auto count = [&](const char* what, int64_t value, int64_t least) {
+    if (value < least || value > std::numeric_limits<int>::max())
+      throw InputError(path, std::string("the header's number of ") + what + " is " +
+                                 std::to_string(value) + "; expected " + std::to_string(least) +
+                                 " to " + std::to_string(std::numeric_limits<int>::max()));
+  };
+  count("nodes", init.num_nodes, 1);
+  if (init.num_elem == 0) throw InputError(path, "the mesh has no elements");
+  count("elements", init.num_elem, 1);
+  count("element blocks", init.num_elem_blk, 1);
+  count("node sets", init.num_node_sets, 0);
+  count("side sets", init.num_side_sets, 0);
+  std::error_code error;
+  const auto bytes = static_cast<double>(std::filesystem::file_size(path, error));
+  const double needed = static_cast<double>(init.num_nodes) * 2 * std::max(io_ws, 4) +
+                        static_cast<double>(init.num_elem) * 3 * 4;
+  if (!error && needed > bytes)
+    throw InputError(path, "the header says " + std::to_string(init.num_nodes) + " nodes and " +
+                               std::to_string(init.num_elem) + " elements, more than the file's " +
+                               std::to_string(static_cast<long long>(bytes)) +
+                               " bytes can hold (truncated or damaged file)");
+}
+
 struct RawBlock {
   int id;
   std::string name;
@@ -132,9 +168,9 @@ Mesh readExodusMesh(const std::string& path) {
   if (init.num_dim != 2)
     throw InputError(path, "only 2D meshes are supported; the file has " +
                                std::to_string(init.num_dim) + " dimensions");
+  checkHeaderCounts(path, init, io_ws);
   const int num_nodes = static_cast<int>(init.num_nodes);
   const int num_elements = static_cast<int>(init.num_elem);
-  if (num_elements == 0) throw InputError(path, "the mesh has no elements");
 
   std::vector<double> x(num_nodes), y(num_nodes);
   reader.check(ex_get_coord(exoid, x.data(), y.data(), nullptr), "ex_get_coord");
@@ -153,6 +189,10 @@ Mesh readExodusMesh(const std::string& path) {
                               &faces, &attributes),
                  "ex_get_block");
     RawBlock block{block_ids[b], block_names[b], type_name, ElementType::Tri3, {}, count};
+    if (count < 0 || count > num_elements - total)
+      throw InputError(path, "block " + block.name + " has " + std::to_string(count) +
+                                 " elements, but the header says " + std::to_string(num_elements) +
+                                 " in all blocks");
     total += count;
     if (count > 0) {
       if (!parseElementType(type_name, nodes, &block.type))
@@ -251,6 +291,9 @@ Mesh readExodusMesh(const std::string& path) {
     NodeSet set;
     set.name = node_set_names[s];
     set.id = node_set_ids[s];
+    if (count < 0 || count > num_nodes)
+      throw InputError(path, "node set " + set.name + " has " + std::to_string(count) +
+                                 " entries; the mesh has " + std::to_string(num_nodes) + " nodes");
     set.nodes.resize(count);
     if (count > 0)
       reader.check(ex_get_set(exoid, EX_NODE_SET, set.id, set.nodes.data(), nullptr), "ex_get_set");
@@ -274,6 +317,10 @@ Mesh readExodusMesh(const std::string& path) {
     SideSet set;
     set.name = side_set_names[s];
     set.id = side_set_ids[s];
+    if (count < 0 || count > static_cast<int64_t>(num_elements) * nv)
+      throw InputError(path, "side set " + set.name + " has " + std::to_string(count) +
+                                 " entries; the mesh has " + std::to_string(num_elements) +
+                                 " elements of " + std::to_string(nv) + " sides");
     set.elements.resize(count);
     set.sides.resize(count);
     if (count > 0)

@@ -69,7 +69,7 @@ TEST(HostileMesh, EmptyTruncatedAndForeignFilesNameTheFile) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(bytes.size(), 64u);
   const std::vector<std::string> contents{
-      "",                                // empty
+      "",                                 // empty
       bytes.substr(0, bytes.size() / 2),  // truncated in the data
       bytes.substr(0, 40),                // truncated in the header
       "argine:\n  Title: a deck, not a mesh\n",
@@ -85,6 +85,28 @@ TEST(HostileMesh, EmptyTruncatedAndForeignFilesNameTheFile) {
     } catch (const InputError& error) {
       EXPECT_EQ(error.where(), path) << error.what();
     }
+  }
+}
+
+TEST(HostileMesh, AHeaderClaimingMoreThanTheFileHoldsNamesTheFile) {
+  GeneratorSpec generator;
+  generator.element_size = 0.5;
+  const std::string good = scratchFile("header.exo");
+  writeExodusMesh(good, generateMesh(generator));
+  std::ifstream in(good, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // netCDF header: the dimension name "num_nodes" (9 bytes, padded to 12), then its length
+  // as a 4-byte big-endian integer. Claim 2^31 - 1 nodes (32 GiB of coordinates).
+  const auto at = bytes.find("num_nodes");
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + 12, 4, std::string("\x7f\xff\xff\xff", 4));
+  const std::string path = scratchFile("huge_header.exo");
+  std::ofstream(path, std::ios::binary) << bytes;
+  try {
+    readExodusMesh(path);
+    ADD_FAILURE() << "a header of 2^31 - 1 nodes was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), path) << error.what();
   }
 }
 
