@@ -110,5 +110,20 @@ TEST(HostileMesh, AHeaderClaimingMoreThanTheFileHoldsNamesTheFile) {
   }
 }
 
+TEST(HostileMesh, ADamagedNetcdfHeaderFoundByFuzzingIsRejectedBeforeNetcdfOpensIt) {
+  // fuzz/fuzz_exodus_reader's first finding: 963 bytes whose header counts made libnetcdf's
+  // nc_open allocate and clear 1.7 GB for over 10 s. Now an InputError naming the file.
+  const std::string path =
+      std::string(ARGINE_SOURCE_DIR) + "/tests/meshio/damaged_netcdf_header.exo";
+  try {
+    readExodusMesh(path);
+    ADD_FAILURE() << "the damaged header was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), path);
+    EXPECT_NE(std::string(error.what()).find("damaged netCDF header"), std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace argine
