@@ -82,6 +82,9 @@ int runCommand(const std::string& command, const Arguments& arguments) {
     const argine::Deck deck = argine::readDeck(deckArgument(arguments, "check"));
     argine::checkDeckSupported(deck);
     const argine::Mesh mesh = argine::loadMesh(deck);
+    // (P8) Seeding checks Points Per Element against the element type: without it, check
+    // called valid a deck that run then rejected.
+    (void)argine::seedPoints(deck, mesh);
     std::printf("%s: valid (%zu materials, %zu stages; mesh %d nodes, %d %s elements)\n",
                 deck.path.c_str(), deck.materials.size(), deck.stages.size(), mesh.numNodes(),
                 mesh.numElements(), argine::exodusName(mesh.type));
