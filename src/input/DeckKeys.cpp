@@ -652,13 +652,14 @@ ListSchema probeKeys() {
 
 ListSchema guardKeys() {
   ListSchema guards;
-  guards.add(KeySpec::choice("Points Leaving Mesh", Words{"stop", "remove"},
-                             "material points that leave the background mesh: stop (the run "
-                             "ends with an error naming time, step, point id and position; the "
-                             "last output is kept) or remove (taken out of the computation: "
-                             "velocities set to zero, frozen where they left; counted in the log and in "
-                             "the diagnostics' lost_points)")
-                 .byDefault(std::string("stop")));
+  guards.add(
+      KeySpec::choice("Points Leaving Mesh", Words{"stop", "remove"},
+                      "material points that leave the background mesh: stop (the run "
+                      "ends with an error naming time, step, point id and position; the "
+                      "last output is kept) or remove (taken out of the computation: "
+                      "velocities set to zero, frozen where they left; counted in the log and in "
+                      "the diagnostics' lost_points)")
+          .byDefault(std::string("stop")));
   guards.add(KeySpec::real("Mass Balance Bound", "-",
                            "warn once when |liquid storage change - net inflow through the "
                            "nodes| exceeds this fraction of the initial liquid volume "

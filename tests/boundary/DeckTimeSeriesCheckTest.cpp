@@ -36,8 +36,8 @@ TEST(DeckTimeSeriesCheck, ACsvFileThatDoesNotIncreaseNamesTheKeyAndTheFile) {
   const auto directory = test::testDirectory();
   const std::string csv =
       test::writeFile(directory, "gauge.csv", "time, level\n0, 0.2\n150, 0.85\n100, 0.9\n");
-  const std::string deck = test::writeFile(directory, "deck.yaml",
-                                           deckWithLaterStage("Total Head File: gauge.csv"));
+  const std::string deck =
+      test::writeFile(directory, "deck.yaml", deckWithLaterStage("Total Head File: gauge.csv"));
   const Deck parsed = readDeck(deck);  // the reader checks only that the file exists
   test::expectInputError([&] { checkDeckTimeSeries(parsed); },
                          "Stages/later/Boundary Conditions/river/Total Head File",
