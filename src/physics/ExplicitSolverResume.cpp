@@ -28,8 +28,14 @@ void ExplicitTwoPhaseSolver::resume(const ResumeState& state) {
   }
   // The uninterrupted run relocated the points from these positions at the end of the last
   // step (or re-relocated them after sorting): doing it again gives the same elements, local
-  // coordinates and shape functions bit for bit.
-  relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  // coordinates and shape functions bit for bit. Before its first step (e.g. after implicit
+  // stages, which do not move the points) it holds the shapes the constructor evaluated from
+  // the seeded elements and local coordinates, which relocation would reproduce only to
+  // round-off: evaluate those again.
+  if (state.diagnostics.step == 0)
+    evaluatePointShapes(mesh_, points_, shapes_);
+  else
+    relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_);
   nodes_next_changed_ = true;
   free_boundary_stale_ = true;  // detected again from the points' elements

@@ -292,6 +292,70 @@ TEST_F(Restart, KilledInTheSecondStageReappliesItsMaterialChange) {
   expectSameResults(killed, reference_dir);
 }
 
+// An implicit seepage stage (12 implicit steps, not checkpointed inside) and an explicit one:
+// the step count passes 10 during the implicit stage, so a checkpoint is written at the stage
+// boundary ("before 'settle'"); killed at step 17, before the next one (step 20).
+const char* kHybridDeck = R"(argine:
+  Title: restart test, implicit then explicit
+  Mesh:
+    Generate: {Type: rectangle, Element: tri3, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right (m): [0.1, 1.0], Block: soil}
+  Materials:
+    soil:
+      Block: soil
+      Points Per Element: 3
+      Phase Model: unsaturated
+      Porosity: 0.4
+      Solid Density (kg/m3): 2700
+      Solid: {Model: linear elastic, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.0}
+      Liquid: {Density (kg/m3): 1000, Bulk Modulus (Pa): 1.0e7, Viscosity (Pa s): 1.0e-3}
+      Retention: {Model: van genuchten, Reference Pressure (Pa): 3000, Lambda: 0.7, Minimum Saturation: 0.125, Maximum Saturation: 1.0}
+      Conductivity: {Model: constant, Intrinsic Permeability (m2): 1.0e-11}
+      Initial State: {Liquid Pressure (Pa): -2000, Vertical Effective Stress (Pa): 0.0, K0: 1.0}
+  Stages:
+    rain:
+      Solver: implicit seepage
+      Duration (s): 20
+      Gravity (m/s2): 9.81
+      Output Interval (s): 10
+      Implicit Seepage:
+        Initial Step (s): 0.5
+        Maximum Step (s): 2.0
+      Boundary Conditions:
+        rain: {Type: infiltration, Side Set: top, Flux (m/s): 1.0e-4}
+        sealed base: {Type: impermeable, Side Set: bottom}
+    settle:
+      Solver: explicit
+      Duration (s): 0.004
+      Gravity (m/s2): 9.81
+      Local Damping: 0.1
+      Output Interval (s): 0.001
+      Boundary Conditions:
+        base: {Type: solid fixity, Node Set: bottom, Direction: both}
+        left: {Type: solid fixity, Node Set: left, Direction: x}
+        right: {Type: solid fixity, Node Set: right, Direction: x}
+        rain: {Type: infiltration, Side Set: top, Flux (m/s): 1.0e-4}
+  Output:
+    Name: column
+    Checkpoint: {Every Steps: 10}
+)";
+
+TEST_F(Restart, CheckpointAtAStageBoundaryAfterAnImplicitStage) {
+  std::ofstream(deck_) << kHybridDeck;
+  const fs::path reference_dir = reference();
+  const fs::path killed = killedAt(17);
+  CheckpointState state;
+  state.points.allocate(60);
+  readCheckpoint((killed / "column.checkpoint").string(), fileHash(deck_.string()), state);
+  EXPECT_EQ(state.steps, 12);
+  EXPECT_EQ(state.stage_index, 1);
+  EXPECT_FALSE(state.mid_stage);
+  const Outcome resumed = restart(killed, killed / "column.checkpoint");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  for (const auto& name : kExodusFiles) expectSameExodus(killed / name, reference_dir / name);
+  for (const char* name : {"column_diagnostics.csv", "column_boundary_flux.csv"})
+    EXPECT_EQ(readAll(killed / name), readAll(reference_dir / name)) << name;
+}
+
 TEST_F(Restart, BadCheckpointsAreRefusedNamingTheFileBeforeAnyOutput) {
   const fs::path killed = killedAt(120);
   const fs::path good = killed / "column.checkpoint";
