@@ -1,6 +1,8 @@
 // Checkpoints and restart of a run (issue P8, doc/checkpoints.md): what the Simulation
 // writes, and how `argine run DECK --restart FILE` picks the run up so that it continues bit
 // for bit and its files end up as those of an uninterrupted run. One rank only.
+#include <mpi.h>
+
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -31,6 +33,14 @@ double steadySeconds() {
 void Simulation::readRestartCheckpoint() {
   const bool restart = !options_.restart.empty();
   if (!restart && !deck_.output.checkpoint.enabled()) return;
+  // One rank: every rank would write the same file (and a decomposed run would need them all).
+  int initialised = 0, ranks = 1;
+  MPI_Initialized(&initialised);
+  if (initialised) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (ranks > 1)
+    throw InputError(
+        restart ? options_.restart : "Output/Checkpoint",
+        "checkpoints and restart run on one MPI rank only; this run has " + std::to_string(ranks));
   deck_hash_ = deck_.path.empty() ? 0 : fileHash(deck_.path);
   if (!restart) return;
   const std::string& path = options_.restart;
