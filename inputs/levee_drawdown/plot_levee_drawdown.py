@@ -33,10 +33,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 FOLDER = {"levee_drawdown": HERE, "levee_drawdown_constant": HERE,
           "levee_rainfall": os.path.join(ROOT, "inputs", "levee_rainfall")}
-TIMES = {"levee_drawdown": (3.0, 6.0, 10.0, 12.0),
-         "levee_drawdown_constant": (5.0, 10.0, 20.0, 30.0),
-         "levee_rainfall": (5.0, 10.0, 20.0, 21.0)}
-STAGE_START = 1.0  # t at which the settle stage ends and the event (drawdown, rain) starts (s)
+# Reporting times, counted like the thesis' from the start of the event (the drawdown or the
+# rain): t_event = t - EVENT_START.
+TIMES = {"levee_drawdown": (3.0, 6.0, 10.0, 20.0),
+         "levee_drawdown_constant": (3.0, 6.0, 10.0, 20.0, 60.0),
+         "levee_rainfall": (2.0, 5.0, 10.0, 20.0)}
+# Simulation time t at which the event starts: after `settle` (1 s) for the drawdown, after
+# `settle` (2 s) and `soften` (1 s) for the rainfall.
+EVENT_STARTS = {"levee_drawdown": 1.0, "levee_drawdown_constant": 1.0, "levee_rainfall": 3.0}
+STAGE_START = 1.0  # set by main() from EVENT_STARTS
 ONSET = 0.01  # failure onset: the crest probe has moved this far since STAGE_START (m)
 STILL = 1e-3  # "at rest": the probes' speed is below this (m/s)
 
@@ -66,51 +71,67 @@ def at(t, values, time):
 
 
 def report(name, probes, diag, times):
-    print(f"{name}: probes (initial position) and displacement norm |u| (cm)")
+    print(f"{name}: probes (initial position); |u| (cm) at event times t - {STAGE_START:g} s; "
+          f"in brackets the displacement since the event started")
     for label, p in probes.items():
-        cells = ", ".join(f"t = {s:g} s: {100 * at(p['time'], p['norm'], s):.1f}" for s in times)
-        print(f"  {label} ({p['x'][0]:.2f}, {p['y'][0]:.2f}) m: {cells}; largest "
-              f"{100 * p['norm'].max():.1f} at t = {p['time'][np.argmax(p['norm'])]:.1f} s")
+        u0 = [at(p["time"], p[k], STAGE_START) for k in ("displacement_x", "displacement_y")]
+        since = np.hypot(p["displacement_x"] - u0[0], p["displacement_y"] - u0[1])
+        cells = ", ".join(f"{s:g} s: {100 * at(p['time'], p['norm'], STAGE_START + s):.2f} "
+                          f"({100 * at(p['time'], since, STAGE_START + s):.2f})" for s in times)
+        print(f"  {label} ({p['x'][0]:.2f}, {p['y'][0]:.2f}) m: at the event start "
+              f"{100 * at(p['time'], p['norm'], STAGE_START):.2f}; {cells}; largest "
+              f"{100 * p['norm'].max():.2f} at t - {STAGE_START:g} = "
+              f"{p['time'][np.argmax(p['norm'])] - STAGE_START:.1f} s")
     crest = next(p for label, p in probes.items() if "MP1" in label)
     moved = crest["norm"] - at(crest["time"], crest["norm"], STAGE_START)
     after = crest["time"] > STAGE_START
     onset = crest["time"][after & (moved >= ONSET)]
     print(f"  failure onset (crest probe {100 * ONSET:g} cm beyond its position at "
-          f"t = {STAGE_START:g} s): " + (f"t = {onset[0]:.1f} s" if onset.size else "none"))
+          f"t = {STAGE_START:g} s): " +
+          (f"t - {STAGE_START:g} = {onset[0] - STAGE_START:.1f} s" if onset.size else "none"))
     speed = np.max([np.hypot(p["velocity_x"], p["velocity_y"]) for p in probes.values()], axis=0)
     moving = np.where(after & (speed > STILL))[0]
     if moving.size:
-        print(f"  probes move faster than {1e3 * STILL:g} mm/s until t = "
-              f"{crest['time'][moving[-1]]:.1f} s (record ends at {crest['time'][-1]:.1f} s)")
+        print(f"  probes move faster than {1e3 * STILL:g} mm/s until t - {STAGE_START:g} = "
+              f"{crest['time'][moving[-1]] - STAGE_START:.1f} s (record ends at t = "
+              f"{crest['time'][-1]:.1f} s)")
     energy = diag["kinetic_energy_solid"] + diag["kinetic_energy_liquid"]
     k = int(np.argmax(energy))
     print(f"  largest kinetic energy (outputs): {energy[k]:.3g} J/m at t = {diag['time'][k]:g} s")
+    for label, p in probes.items():
+        cells = ", ".join(f"{s:g} s: {at(p['time'], p['liquid_pressure'], STAGE_START + s) / 1e3:.1f}"
+                          for s in (0.0, *times))
+        print(f"  p_L (kPa) of {label} at event times {cells}; lowest "
+              f"{p['liquid_pressure'].min() / 1e3:.1f} at t - {STAGE_START:g} = "
+              f"{p['time'][np.argmin(p['liquid_pressure'])] - STAGE_START:.1f} s")
 
 
 def plot_history(name, probes, diag, path):
     fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    event = f"time since the event started, t - {STAGE_START:g} s (s)"
     for j, (label, p) in enumerate(probes.items()):
-        axes[0][0].plot(p["time"], 100 * p["norm"], color=f"C{j}", label=label + " |u|")
-        axes[0][0].plot(p["time"], 100 * p["displacement_x"], color=f"C{j}", ls="--", lw=0.8)
-        axes[0][1].plot(p["time"], p["liquid_pressure"] / 1e3, color=f"C{j}", label=label)
-        axes[1][0].plot(p["time"], p["deviatoric_strain"], color=f"C{j}", label=label)
-    axes[0][0].set(xlabel="time t (s)", ylabel="displacement (cm)",
+        t = p["time"] - STAGE_START
+        axes[0][0].plot(t, 100 * p["norm"], color=f"C{j}", label=label + " |u|")
+        axes[0][0].plot(t, 100 * p["displacement_x"], color=f"C{j}", ls="--", lw=0.8)
+        axes[0][1].plot(t, p["liquid_pressure"] / 1e3, color=f"C{j}", label=label)
+        axes[1][0].plot(t, p["deviatoric_strain"], color=f"C{j}", label=label)
+    axes[0][0].set(xlabel=event, ylabel="displacement (cm)",
                    title="displacement of the probes (solid: norm, dashed: horizontal)")
-    axes[0][1].set(xlabel="time t (s)", ylabel="p_L (kPa), suction negative",
+    axes[0][1].set(xlabel=event, ylabel="p_L (kPa), suction negative",
                    title="liquid pressure of the probes")
-    axes[1][0].set(xlabel="time t (s)", ylabel="deviatoric strain (-)",
+    axes[1][0].set(xlabel=event, ylabel="deviatoric strain (-)",
                    title="deviatoric strain of the probes")
     energy = diag["kinetic_energy_solid"] + diag["kinetic_energy_liquid"]
-    axes[1][1].semilogy(diag["time"][1:], np.maximum(energy[1:], 1e-9), "o-", ms=3)
-    axes[1][1].set(xlabel="time t (s)", ylabel="kinetic energy (J/m)",
+    axes[1][1].semilogy(diag["time"][1:] - STAGE_START, np.maximum(energy[1:], 1e-9), "o-", ms=3)
+    axes[1][1].set(xlabel=event, ylabel="kinetic energy (J/m)",
                    title="kinetic energy of solid and liquid (diagnostics CSV)")
     for ax in axes.flat:
-        ax.axvline(STAGE_START, color="0.5", lw=0.8)
+        ax.axvline(0.0, color="0.5", lw=0.8)
         ax.grid(alpha=0.3)
     for ax in axes.flat[:3]:
         ax.legend(fontsize=8)
-    fig.suptitle(f"{name}: settle stage until t = {STAGE_START:g} s (grey line), then the event",
-                 fontsize=10)
+    fig.suptitle(f"{name}: initial stages before the grey line (t = {STAGE_START:g} s of the "
+                 f"simulation), then the event", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
@@ -150,7 +171,8 @@ def plot_map(name, directory, path, until=None):
         ax.set_aspect("equal")
         ax.set_ylim(-0.6, 3.3)
         ax.set_ylabel("y (m)")
-        ax.set_title(f"t = {time[k]:.3g} s", fontsize=9)
+        ax.set_title(f"t = {time[k]:.3g} s ({time[k] - STAGE_START:.3g} s after the event "
+                     f"started)", fontsize=9)
     fig.colorbar(image, ax=axes, label="displacement |u| (cm)", shrink=0.8)
     np.atleast_1d(axes)[-1].set_xlabel("x (m); symmetry axis at x = 0; dashed: initial surface")
     fig.savefig(path, dpi=110)
@@ -167,6 +189,8 @@ def main(default_name="levee_drawdown"):
     parser.add_argument("--until", type=float, help="ignore results after this time (s)")
     args = parser.parse_args()
     name = args.name
+    global STAGE_START
+    STAGE_START = EVENT_STARTS.get(name, 1.0)
     results = args.results or os.path.join(ROOT, "results", name)
     figures = args.figures or FOLDER.get(name, HERE)
     probes = read_probes(results, name)

@@ -29,19 +29,21 @@ void toDevice(const std::vector<T>& values, const char* label, Kokkos::View<T*, 
 
 }  // namespace
 
-TimeSeries makeTimeSeries(const TimeSeriesSpec& spec) {
+TimeSeries makeTimeSeries(const TimeSeriesSpec& spec, Real stage_start) {
+  const Real offset = spec.origin == TimeOrigin::StageStart ? stage_start : 0;
   switch (spec.source) {
     case TimeSeriesSpec::Source::Constant:
       return TimeSeries::constant(spec.value);
     case TimeSeriesSpec::Source::Table:
-      return TimeSeries::fromPairs(spec.pairs, spec.where);
+      return TimeSeries::fromPairs(spec.pairs, spec.where).shifted(offset);
     case TimeSeriesSpec::Source::File:
-      return TimeSeries::fromCsvFile(spec.file, spec.where);
+      return TimeSeries::fromCsvFile(spec.file, spec.where).shifted(offset);
   }
   return TimeSeries::constant(spec.value);
 }
 
-HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stage) {
+HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stage,
+                                         Real stage_start) {
   for (const BoundarySpec& spec : stage.boundaries) {
     if (!isHydraulic(spec.kind)) continue;
     const std::string where = "Stages/" + stage.name + "/Boundary Conditions/" + spec.name;
@@ -64,7 +66,7 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
         condition.side_set.push_back({set->elements[k], set->sides[k]});
     }
     if (spec.kind != BoundaryKind::SeepageFace)
-      condition.series = makeTimeSeries(spec.hydraulic.series);
+      condition.series = makeTimeSeries(spec.hydraulic.series, stage_start);
     condition.above = spec.hydraulic.above;
     condition.pressure_above = spec.hydraulic.pressure_above;
     condition.ponding = spec.hydraulic.ponding;

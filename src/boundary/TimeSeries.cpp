@@ -124,4 +124,10 @@ Real TimeSeries::at(Real time) const {
   return interpolateClamped(times_, values_, time);
 }
 
+TimeSeries TimeSeries::shifted(Real offset) const {
+  TimeSeries moved = *this;
+  for (Real& t : moved.times_) t += offset;
+  return moved;
+}
+
 }  // namespace argine

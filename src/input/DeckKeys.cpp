@@ -371,6 +371,12 @@ void addHydraulicBoundaryKeys(ListSchema& boundary) {
   addTimeSeriesKeys(boundary, "Flux", "m/s", "infiltration",
                     "infiltration flux q into the soil (rain positive, evaporation negative)",
                     true);
+  boundary.add(KeySpec::choice("Time Origin", deckWords(kTimeOriginWords),
+                               "what the times of a Total Head/Pressure/Flux Table or File "
+                               "count from: the start of this stage, or the start of the "
+                               "first stage (simulation time)")
+                   .when("Type", {"total head", "pressure series", "infiltration"})
+                   .byDefault(std::string("stage start")));
   boundary.add(KeySpec::boolean("Ponding",
                                 "rain the saturated surface cannot take ponds and is imposed "
                                 "anyway (true), or runs off at zero pressure (false)")

@@ -200,6 +200,7 @@ TimeSeriesSpec parseTimeSeries(const DeckSection& boundary, const std::string& v
     spec.where = boundary.pathOf(constant);
     spec.value = boundary.real(constant);
   }
+  spec.origin = deckValue(kTimeOriginWords, boundary.word("Time Origin"));
   return spec;
 }
 

@@ -80,7 +80,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
   boundaries_ = StageBoundaryConditions(mesh_, stage);
-  hydraulic_ = HydraulicConditions(mesh_, stage);
+  hydraulic_ = HydraulicConditions(mesh_, stage, time_);  // tables count from the stage start
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
   free_boundary_stale_ = true;
 

@@ -270,7 +270,7 @@ void ImplicitSeepageSolver::setBoundaryPlan(const SeepageBoundaryPlan& plan) {
 void ImplicitSeepageSolver::beginStage(const StageSpec& stage) {
   setSettings(stage.seepage);
   setGravity(stage.gravity);
-  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage));
+  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage, impl_->time));
   projectPressureFromPoints();
 }
 

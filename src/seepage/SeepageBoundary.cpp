@@ -131,7 +131,7 @@ bool SeepageBoundaryPlan::timeDependent() const {
 }
 
 SeepageBoundaryPlan seepageBoundaryPlan(const Mesh& mesh, const MaterialPoints& points,
-                                        const StageSpec& stage) {
+                                        const StageSpec& stage, Real stage_start) {
   SeepageBoundaryPlan plan;
   plan.gravity = stage.gravity;
   FreeBoundary boundary(mesh);
@@ -171,7 +171,7 @@ SeepageBoundaryPlan seepageBoundaryPlan(const Mesh& mesh, const MaterialPoints& 
       condition.series = TimeSeries::constant(spec.pressure);
     } else {
       if (spec.kind != BoundaryKind::SeepageFace)
-        condition.series = makeTimeSeries(spec.hydraulic.series);
+        condition.series = makeTimeSeries(spec.hydraulic.series, stage_start);
       condition.above = spec.hydraulic.above;
       condition.pressure_above = spec.hydraulic.pressure_above;
       condition.ponding = spec.hydraulic.ponding;

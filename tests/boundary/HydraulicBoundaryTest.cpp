@@ -38,6 +38,18 @@ TEST(TimeSeries, InterpolatesLinearlyAndClampsTheEnds) {
   EXPECT_DOUBLE_EQ(TimeSeries::constant(-2e-6).at(1e9), -2e-6);
 }
 
+TEST(TimeSeries, ShiftedMovesEveryRowOntoTheSimulationClock) {
+  // rows (0, 2.0), (1, 0.5) shifted by 3 s: (3, 2.0), (4, 0.5); at 3.5 s halfway: 1.25;
+  // before 3 s the first value 2.0 holds (unshifted, 0.5 would hold from 1 s on).
+  const TimeSeries head = TimeSeries::fromPairs({0, 2.0, 1, 0.5}, "key").shifted(3.0);
+  EXPECT_DOUBLE_EQ(head.times()[0], 3.0);
+  EXPECT_DOUBLE_EQ(head.times()[1], 4.0);
+  EXPECT_DOUBLE_EQ(head.at(2.0), 2.0);
+  EXPECT_DOUBLE_EQ(head.at(3.5), 1.25);
+  EXPECT_DOUBLE_EQ(head.at(9.0), 0.5);
+  EXPECT_DOUBLE_EQ(TimeSeries::constant(7.0).shifted(3.0).at(0.0), 7.0);
+}
+
 TEST(TimeSeries, ReadsAGaugeCsvWithHeaderAndComments) {
   const std::string path =
       writeFile("gauge_ok.csv", "# river gauge\ntime (s), level (m)\n0, 1.0\n10;2.0\n\n20\t4.0\n");
@@ -345,6 +357,31 @@ TEST(HydraulicConditions, SubmergedBlockFeelsArchimedes) {
     for (int d = 0; d < kDim; ++d) lsum[d] += lliquid(j, d);
   EXPECT_NEAR(lsum[0], 11250.0, 1e-9);
   EXPECT_NEAR(lsum[1], 15000.0, 1e-9);
+}
+
+TEST(HydraulicConditions, TableTimesCountFromTheStageStartUnlessToldOtherwise) {
+  // A drawdown table (0 s, 2.0 m), (1 s, 0.5 m) in a stage that starts at t = 1 s (after a
+  // 1 s settling stage). Stage start (default): at t = 1.5 s the stage has run 0.5 s, the
+  // head is halfway, (2.0 + 0.5) / 2 = 1.25 m; at t = 1.0 s still 2.0 m. Simulation start:
+  // the table's 1 s has passed at t = 1.5 s, the head is 0.5 m.
+  const Mesh mesh = test::rectangleMesh(2, 2, 2.0, 2.0, ElementType::Quad4);
+  FreeBoundary boundary(mesh);
+  boundary.detect(test::seedUniform(mesh));
+  BoundarySpec river = headCondition("river", 0.0, ZoneSpec{});
+  river.hydraulic.series.source = TimeSeriesSpec::Source::Table;
+  river.hydraulic.series.pairs = {0.0, 2.0, 1.0, 0.5};
+  StageSpec stage;
+  stage.name = "drawdown";
+  stage.boundaries = {river};
+  HydraulicConditions from_stage(mesh, stage, 1.0);
+  from_stage.plan(1.0, 10.0, boundary);
+  EXPECT_DOUBLE_EQ(from_stage.currentValues()[0], 2.0);
+  from_stage.plan(1.5, 10.0, boundary);
+  EXPECT_DOUBLE_EQ(from_stage.currentValues()[0], 1.25);
+  stage.boundaries[0].hydraulic.series.origin = TimeOrigin::SimulationStart;
+  HydraulicConditions from_simulation(mesh, stage, 1.0);
+  from_simulation.plan(1.5, 10.0, boundary);
+  EXPECT_DOUBLE_EQ(from_simulation.currentValues()[0], 0.5);
 }
 
 TEST(HydraulicConditions, LoadFollowsTheMovingSurface) {

@@ -27,6 +27,7 @@ TEST(HydraulicDeck, ConditionsFillZoneSeriesAndOptions) {
           Type: pressure series
           Side Set: top
           Pressure Table: [0, 0.0, 10, 2000.0]
+          Time Origin: simulation start
         rain:
           Type: infiltration
           Zone: {Type: polyline band, Vertices (m): [0, 1, 4, 1, 6, 0], Width (m): 0.1}
@@ -51,10 +52,12 @@ TEST(HydraulicDeck, ConditionsFillZoneSeriesAndOptions) {
   EXPECT_EQ(b[1].hydraulic.series.pairs, (std::vector<Real>{0, 0.2, 150, 0.85}));
   EXPECT_EQ(b[1].hydraulic.series.where, "Stages/load/Boundary Conditions/river/Total Head Table");
   EXPECT_EQ(b[1].hydraulic.above, AboveLevel::LinearSuction);
-  EXPECT_DOUBLE_EQ(b[1].hydraulic.liquid_density, 1000.0);  // default
+  EXPECT_EQ(b[1].hydraulic.series.origin, TimeOrigin::StageStart);  // default
+  EXPECT_DOUBLE_EQ(b[1].hydraulic.liquid_density, 1000.0);          // default
   EXPECT_EQ(b[2].kind, BoundaryKind::PressureSeries);
   EXPECT_FALSE(b[2].hydraulic.on_zone);
   EXPECT_EQ(b[2].side_set, "top");
+  EXPECT_EQ(b[2].hydraulic.series.origin, TimeOrigin::SimulationStart);
   EXPECT_EQ(b[3].kind, BoundaryKind::Infiltration);
   EXPECT_EQ(b[3].hydraulic.zone.vertices.size(), 3u);
   EXPECT_DOUBLE_EQ(b[3].hydraulic.zone.width, 0.1);

@@ -81,7 +81,7 @@ int run(int argc, char** argv) {
   std::string rain_name;
   for (const auto& boundary : stage.boundaries)
     if (boundary.kind == argine::BoundaryKind::Infiltration) {
-      rain_series = argine::makeTimeSeries(boundary.hydraulic.series);
+      rain_series = argine::makeTimeSeries(boundary.hydraulic.series, 0.0);
       rain_name = boundary.name;
     }
 

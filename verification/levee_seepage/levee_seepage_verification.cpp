@@ -139,7 +139,7 @@ int run(int argc, char** argv) {
   argine::TimeSeries river;
   for (const auto& boundary : stage.boundaries)
     if (boundary.kind == argine::BoundaryKind::TotalHead)
-      river = argine::makeTimeSeries(boundary.hydraulic.series);
+      river = argine::makeTimeSeries(boundary.hydraulic.series, 0.0);
   const Real rho_g = deck.materials.front().liquid.density * argine::kStandardGravity;
 
   av::HydraulicRun run(deck, hydrostaticProfile);

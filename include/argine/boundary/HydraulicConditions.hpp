@@ -42,8 +42,11 @@ struct HydraulicCondition {
   Real liquid_density = 1000;  ///< head -> pressure (kg/m^3)
 };
 
-/// Resolves the time series of a deck spec (reads a CSV file; InputError(spec.where)).
-TimeSeries makeTimeSeries(const TimeSeriesSpec& spec);
+/// Resolves the time series of a deck spec (reads a CSV file; InputError(spec.where)) on the
+/// simulation clock: a table or file whose times count from the stage's start
+/// (TimeOrigin::StageStart) is shifted by `stage_start` (s), the simulation time at which
+/// the stage holding the condition begins.
+TimeSeries makeTimeSeries(const TimeSeriesSpec& spec, Real stage_start);
 
 /// Device lists of one step's nodal corrections (see HydraulicAlgebra: FluxCorrection).
 struct FluxCorrectionList {
@@ -72,8 +75,9 @@ class HydraulicConditions {
   HydraulicConditions() = default;
   /// The hydraulic conditions of `stage` (others are ignored); InputError with where =
   /// "Stages/<stage>/Boundary Conditions/<name>" for a missing side set, or the time-series
-  /// key for an unreadable file.
-  HydraulicConditions(const Mesh& mesh, const StageSpec& stage);
+  /// key for an unreadable file. `stage_start` (s): the simulation time at which the stage
+  /// begins, the origin of its tables' times unless a condition says `simulation start`.
+  HydraulicConditions(const Mesh& mesh, const StageSpec& stage, Real stage_start = 0);
 
   bool empty() const { return conditions_.empty(); }
   const std::vector<HydraulicCondition>& conditions() const { return conditions_; }

@@ -36,6 +36,9 @@ class TimeSeries {
 
   /// The value at `time`: linear between rows, the first/last value before/after the table.
   Real at(Real time) const;
+  /// The same rows with every time increased by `offset` (s): a table whose times count
+  /// from a stage's start, moved onto the simulation clock (offset = the stage's start).
+  TimeSeries shifted(Real offset) const;
 
   const std::vector<Real>& times() const { return times_; }
   const std::vector<Real>& values() const { return values_; }

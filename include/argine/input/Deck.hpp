@@ -145,14 +145,19 @@ struct ZoneSpec {
   Real width = 0;                             ///< polyline band half-width (m)
 };
 
+/// What the times of a table or file count from: the start of the stage that holds the
+/// condition (default), or the start of the simulation (the first stage).
+enum class TimeOrigin { StageStart, SimulationStart };
+
 /// A time-dependent value as written in the deck: a constant, an inline table of pairs
 /// (t, v), or a CSV file; `where` is the key path for error messages.
 struct TimeSeriesSpec {
   enum class Source { Constant, Table, File } source = Source::Constant;
-  Real value = 0;           ///< Constant (SI)
-  std::vector<Real> pairs;  ///< Table: t0, v0, t1, v1, ... (s, SI)
-  std::string file;         ///< File: absolute path of the two-column CSV
-  std::string where;        ///< deck key path of the value
+  Real value = 0;                              ///< Constant (SI)
+  std::vector<Real> pairs;                     ///< Table: t0, v0, t1, v1, ... (s, SI)
+  std::string file;                            ///< File: absolute path of the two-column CSV
+  std::string where;                           ///< deck key path of the value
+  TimeOrigin origin = TimeOrigin::StageStart;  ///< what the table's or file's times count from
 };
 
 /// What a total-head condition does on the free boundary above the current level (Sec. 4.1).

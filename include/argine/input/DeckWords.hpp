@@ -96,6 +96,11 @@ inline constexpr DeckWord<AboveLevel> kAboveLevelWords[] = {
     {"seepage face", AboveLevel::SeepageFace},
 };
 
+inline constexpr DeckWord<TimeOrigin> kTimeOriginWords[] = {
+    {"stage start", TimeOrigin::StageStart},
+    {"simulation start", TimeOrigin::SimulationStart},
+};
+
 inline constexpr DeckWord<ElementType> kElementWords[] = {
     {"tri3", ElementType::Tri3},
     {"quad4", ElementType::Quad4},

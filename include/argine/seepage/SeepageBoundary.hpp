@@ -105,7 +105,9 @@ class SeepageBoundaryPlan {
 /// side sets; the points' elements at the stage start). Throws InputError
 /// ("Stages/<stage>/Boundary Conditions/<name>/Side Set") for a side set the mesh lacks, and
 /// InputError at the time-series key for a missing gauge file.
+/// `stage_start` (s): the simulation time at which the stage begins, the origin of its
+/// tables' times (TimeOrigin::StageStart).
 SeepageBoundaryPlan seepageBoundaryPlan(const Mesh& mesh, const MaterialPoints& points,
-                                        const StageSpec& stage);
+                                        const StageSpec& stage, Real stage_start = 0);
 
 }  // namespace argine
