@@ -78,6 +78,16 @@ SeepageLinearSystem::SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> 
     t_->graph->insertGlobalIndices(row, Teuchos::ArrayView<const T::GO>(cols));
   }
   t_->graph->fillComplete();
+  // The value layout of setValues: the graph's owned rows, columns in increasing order.
+  const auto column_map = t_->graph->getColMap();
+  row_start_.assign(1, 0);
+  for (int row = first_; row < end_; ++row) {
+    for (const T::GO col : columns[row - first_]) {
+      entry_col_.push_back(static_cast<int>(col));
+      entry_local_col_.push_back(column_map->getLocalElement(col));
+    }
+    row_start_.push_back(static_cast<int>(entry_col_.size()));
+  }
   t_->matrix = Teuchos::rcp(new T::Matrix(t_->graph));
   t_->matrix->fillComplete();
   t_->b = Teuchos::rcp(new T::Vector(t_->rows));
@@ -136,6 +146,25 @@ void SeepageLinearSystem::add(int row, const int* cols, const Real* vals, int co
   t_->matrix->sumIntoGlobalValues(static_cast<GO>(row),
                                   Teuchos::ArrayView<const GO>(global_cols, count),
                                   Teuchos::ArrayView<const Real>(vals, count));
+}
+
+int SeepageLinearSystem::entry(int row, int col) const {
+  if (!owns(row)) return -1;
+  for (int e = row_start_[row - first_]; e < row_start_[row - first_ + 1]; ++e)
+    if (entry_col_[e] == col) return e;
+  return -1;
+}
+
+void SeepageLinearSystem::setValues(const std::vector<Real>& values) {
+  using LO = Tpetra::LO;
+  t_->matrix->resumeFill();
+  for (int row = first_; row < end_; ++row) {
+    const int start = row_start_[row - first_], count = row_start_[row - first_ + 1] - start;
+    t_->matrix->replaceLocalValues(static_cast<LO>(row - first_),
+                                   Teuchos::ArrayView<const LO>(&entry_local_col_[start], count),
+                                   Teuchos::ArrayView<const Real>(&values[start], count));
+  }
+  t_->matrix->fillComplete();
 }
 
 void SeepageLinearSystem::endAssembly() {
