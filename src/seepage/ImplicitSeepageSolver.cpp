@@ -375,6 +375,7 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
       if (isFixed(i)) p[i] = fixedValue(i);
     bool converged = false;
     Real last_update = std::numeric_limits<Real>::infinity();
+    Real previous_update = std::numeric_limits<Real>::infinity();
     for (int m = 0; m <= settings.max_picard_iterations; ++m) {
       evaluate();
       Real free_residual = 0, scale = 0;
@@ -389,11 +390,16 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
         break;
       }
       if (m == settings.max_picard_iterations) break;
-      assembleMatrix(dt);
+      // Reuse Matrix: the matrix of the pass's first iteration (the fixed set changes it
+      // between passes) serves the later ones (chord iteration) while the updates at least
+      // halve; a slower iteration gets a fresh matrix.
+      const bool refactor = !settings.reuse_matrix || m == 0 || last_update > 0.5 * previous_update;
+      if (refactor) assembleMatrix(dt);
       std::vector<Real> rhs(dofs()), update;
       for (int i = 0; i < dofs(); ++i) rhs[i] = isFixed(i) ? 0.0 : -residual[i];
-      result.linear_iterations += system->solve(rhs, update);
+      result.linear_iterations += system->solve(rhs, update, refactor);
       ++result.picard_iterations;
+      previous_update = last_update;
       last_update = 0;
       for (int i = 0; i < dofs(); ++i) {
         p[i] += update[i];
