@@ -1,6 +1,6 @@
 # Third-party dependencies, all from Debian packages (see scripts/setup.sh).
 find_package(MPI REQUIRED COMPONENTS CXX)
-find_package(Trilinos 13.2 REQUIRED COMPONENTS Kokkos Tpetra Belos Ifpack2 Teuchos)
+find_package(Trilinos 13.2 REQUIRED COMPONENTS Kokkos Tpetra Belos Ifpack2 Amesos2 Teuchos)
 find_package(ExodusII REQUIRED)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 

@@ -419,9 +419,11 @@ ListSchema boundaryKeys() {
 
 ListSchema linearSolverKeys() {
   ListSchema linear;
-  linear.add(KeySpec::choice("Solver", Words{"gmres", "cg"},
+  linear.add(KeySpec::choice("Solver", Words{"gmres", "cg", "direct"},
                              "Belos Krylov solver (cg needs a symmetric system: no "
-                             "non-symmetric terms are assembled, so both work)")
+                             "non-symmetric terms are assembled, so both work), or direct: "
+                             "Amesos2 KLU2 sparse LU (symbolic factorisation once per stage; "
+                             "Tolerance, Preconditioner ignored)")
                  .byDefault(std::string("gmres")));
   linear.add(KeySpec::real("Tolerance", "-", "relative residual of each linear solve")
                  .above(0)
@@ -479,6 +481,12 @@ ListSchema implicitSeepageKeys() {
                             "less than this fraction of p_ref (the residual is not changed)")
                   .atLeast(0)
                   .byDefault(1e-2));
+  seepage.add(KeySpec::boolean("Reuse Matrix",
+                               "keep the first Picard iteration's matrix (and its factorisation "
+                               "or preconditioner) for the rest of the step: a chord iteration, "
+                               "cheaper per iteration; the residual, hence the converged answer, "
+                               "is unchanged")
+                  .byDefault(false));
   seepage.add(KeySpec::sublist("Linear Solver", linearSolverKeys(), "Belos + Ifpack2 settings"));
   return seepage;
 }

@@ -269,7 +269,8 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
 
 LinearSolverSpec parseLinearSolver(const DeckSection& linear) {
   LinearSolverSpec spec;
-  spec.solver = linear.word("Solver") == "cg" ? "CG" : "GMRES";
+  const std::string solver = linear.word("Solver");
+  spec.solver = solver == "cg" ? "CG" : solver == "direct" ? "DIRECT" : "GMRES";
   spec.tolerance = linear.real("Tolerance");
   spec.max_iterations = static_cast<int>(linear.integer("Maximum Iterations"));
   const std::string preconditioner = linear.word("Preconditioner");
@@ -290,6 +291,7 @@ ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
   spec.min_step = seepage.real("Minimum Step (s)");
   if (seepage.has("Maximum Step (s)")) spec.max_step = seepage.real("Maximum Step (s)");
   spec.adaptive = seepage.boolean("Adaptive Step");
+  spec.reuse_matrix = seepage.boolean("Reuse Matrix");
   spec.max_saturation_change = seepage.real("Maximum Saturation Change");
   spec.max_picard_iterations = static_cast<int>(seepage.integer("Picard Iterations"));
   spec.pressure_tolerance = seepage.real("Pressure Tolerance (Pa)");

@@ -32,8 +32,16 @@ struct ImplicitSeepageSolver::Impl {
     Real porosity;  // n
     Real volume;    // V (m^2 per metre)
     int dof[kMaxElementNodes];
+    // entry[a][b]: index of A(dof[a], dof[b]) in the linear system's value array (-1: row
+    // not owned), fixed for the stage: the matrix is assembled without index lookups.
+    int entry[kMaxElementNodes][kMaxElementNodes];
     PointShape shape;
   };
+  // Per liquid point, refreshed once per step (old level) and once per Picard iteration
+  // (current iterate): the SWRC/HCC are evaluated once per point and iteration, not once per
+  // term (residual storage, residual flux, matrix).
+  std::vector<Real> point_p_old, point_s_old, point_p, point_mobility;
+  std::vector<Real> matrix_values;
   std::vector<Point> liquid_points;
   std::vector<int> dof_of_node, node_of_dof;
   std::unique_ptr<SeepageLinearSystem> system;
@@ -92,53 +100,79 @@ struct ImplicitSeepageSolver::Impl {
     return out;
   }
 
-  /// Storage terms sum_p N_a n V [S rho]_{p_old}^{p} (kg/m), owned rows, summed over ranks.
-  std::vector<Real> storage(const std::vector<Real>& nodal, const std::vector<Real>& old) const {
-    std::vector<Real> out(dofs(), 0.0);
-    for (const Point& point : liquid_points) {
-      if (!touchesOwnedRow(point)) continue;
-      const Real change =
-          point.porosity * point.volume *
-          liquidContentChange(material(point), interpolate(point, nodal), interpolate(point, old));
-      for (int a = 0; a < nodes_per_element; ++a)
-        if (system->owns(point.dof[a])) out[point.dof[a]] += point.shape.value[a] * change;
+  /// S_L at the old level of every liquid point (once per step).
+  void cacheOldLevel(const std::vector<Real>& old) {
+    point_p_old.resize(liquid_points.size());
+    point_s_old.resize(liquid_points.size());
+    for (std::size_t i = 0; i < liquid_points.size(); ++i) {
+      const Point& point = liquid_points[i];
+      point_p_old[i] = interpolate(point, old);
+      point_s_old[i] = saturationAndConductivity(material(point), point_p_old[i]).saturation;
     }
-    system->sumOverRanks(out);
-    return out;
   }
 
-  void assembleMatrix(const std::vector<Real>& nodal, Real dt) {
-    system->beginAssembly();
-    const Real theta = settings.theta;
-    for (const Point& point : liquid_points) {
+  /// The storage terms sum_p N_a n V [S rho]_{p_old}^{p} (kg/m) and the flux terms (as
+  /// flux()) at `nodal` in one pass, owned rows summed over ranks,
+  /// one SWRC/HCC evaluation per point; keeps p_L and the mobility of each point for
+  /// assembleMatrix at the same iterate. Needs cacheOldLevel of the step.
+  void storageAndFlux(const std::vector<Real>& nodal, std::vector<Real>& storage_out,
+                      std::vector<Real>& flux_out) {
+    storage_out.assign(dofs(), 0.0);
+    flux_out.assign(dofs(), 0.0);
+    point_p.resize(liquid_points.size());
+    point_mobility.resize(liquid_points.size());
+    for (std::size_t i = 0; i < liquid_points.size(); ++i) {
+      const Point& point = liquid_points[i];
       if (!touchesOwnedRow(point)) continue;
       const PointMaterial& mat = material(point);
       const Real pressure = interpolate(point, nodal);
+      const LiquidState state = saturationAndConductivity(mat, pressure);
+      point_p[i] = pressure;
+      point_mobility[i] = darcyMobilityFrom(mat, pressure, state.conductivity);
+      const Real change =
+          point.porosity * point.volume *
+          liquidContentChangeFrom(mat, pressure, state.saturation, point_p_old[i], point_s_old[i]);
+      Real local[kMaxElementNodes], f[kMaxElementNodes] = {0, 0, 0, 0};
+      for (int a = 0; a < nodes_per_element; ++a) local[a] = nodal[point.dof[a]];
+      addPointFluxVector(point.shape, nodes_per_element, local, point.volume * point_mobility[i],
+                         liquidDensity(mat.liquid, pressure) * gravity, f);
+      for (int a = 0; a < nodes_per_element; ++a)
+        if (system->owns(point.dof[a])) {
+          storage_out[point.dof[a]] += point.shape.value[a] * change;
+          flux_out[point.dof[a]] += f[a];
+        }
+    }
+    system->sumOverRanks(storage_out);
+    system->sumOverRanks(flux_out);
+  }
+
+  /// The Picard matrix C/dt + theta K at the iterate of the last storageAndFlux.
+  void assembleMatrix(Real dt) {
+    matrix_values.assign(system->entryCount(), 0.0);
+    const Real theta = settings.theta;
+    for (std::size_t i = 0; i < liquid_points.size(); ++i) {
+      const Point& point = liquid_points[i];
+      if (!touchesOwnedRow(point)) continue;
+      const PointMaterial& mat = material(point);
       Real local[kMaxElementNodes][kMaxElementNodes] = {};
       addPointStorageMatrix(point.shape, nodes_per_element,
                             point.porosity * point.volume *
-                                storageSlope(mat, pressure, settings.min_suction_fraction) / dt,
+                                storageSlope(mat, point_p[i], settings.min_suction_fraction) / dt,
                             local);
       addPointConductivityMatrix(point.shape, nodes_per_element,
-                                 theta * point.volume * darcyMobility(mat, pressure), local);
+                                 theta * point.volume * point_mobility[i], local);
       for (int a = 0; a < nodes_per_element; ++a) {
         const int row = point.dof[a];
         if (!system->owns(row) || isFixed(row)) continue;
-        int cols[kMaxElementNodes];
-        Real vals[kMaxElementNodes];
-        int count = 0;
         for (int b = 0; b < nodes_per_element; ++b) {
           if (isFixed(point.dof[b])) continue;  // eliminated: keeps the matrix symmetric
-          cols[count] = point.dof[b];
-          vals[count++] = local[a][b];
+          matrix_values[point.entry[a][b]] += local[a][b];
         }
-        system->add(row, cols, vals, count);
       }
     }
-    const Real one = 1;
     for (int row = system->firstOwned(); row < system->endOwned(); ++row)
-      if (isFixed(row)) system->add(row, &row, &one, 1);
-    system->endAssembly();
+      if (isFixed(row)) matrix_values[system->entry(row, row)] = 1;
+    system->setValues(matrix_values);
   }
 
   bool isFixed(int dof) const { return fixed[dof] || held[dof]; }
@@ -207,6 +241,10 @@ ImplicitSeepageSolver::ImplicitSeepageSolver(const Mesh& mesh, MaterialPoints& p
     s.reference_density = s.table.host(point.material).liquid.density;
   }
   s.system = std::make_unique<SeepageLinearSystem>(comm, s.dofs(), element_dofs);
+  for (Impl::Point& point : s.liquid_points)
+    for (int a = 0; a < s.nodes_per_element; ++a)
+      for (int b = 0; b < s.nodes_per_element; ++b)
+        point.entry[a][b] = s.system->entry(point.dof[a], point.dof[b]);
   s.fixed.assign(s.dofs(), 0);
   s.switchable.assign(s.dofs(), 0);
   s.held.assign(s.dofs(), 0);
@@ -315,12 +353,12 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   if (plan) applyConditions(plan->at(time, time + dt, theta), true);
   const std::vector<Real> p_old = p;
   const std::vector<Real> flux_old = flux(p_old);
+  cacheOldLevel(p_old);
 
-  std::vector<Real> residual(dofs()), terms_scale(dofs());
+  std::vector<Real> residual(dofs()), terms_scale(dofs()), s, f;
   // R = storage/dt + theta F(p) + (1 - theta) F(p_old) - Q (Q on free supply nodes only).
   auto evaluate = [&]() {
-    const std::vector<Real> s = storage(p, p_old);
-    const std::vector<Real> f = flux(p);
+    storageAndFlux(p, s, f);
     for (int i = 0; i < dofs(); ++i) {
       const Real q = isFixed(i) ? 0.0 : supply[i];
       residual[i] = s[i] / dt + theta * f[i] + (1 - theta) * flux_old[i] - q;
@@ -337,6 +375,7 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
       if (isFixed(i)) p[i] = fixedValue(i);
     bool converged = false;
     Real last_update = std::numeric_limits<Real>::infinity();
+    Real previous_update = std::numeric_limits<Real>::infinity();
     for (int m = 0; m <= settings.max_picard_iterations; ++m) {
       evaluate();
       Real free_residual = 0, scale = 0;
@@ -351,11 +390,16 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
         break;
       }
       if (m == settings.max_picard_iterations) break;
-      assembleMatrix(p, dt);
+      // Reuse Matrix: the matrix of the pass's first iteration (the fixed set changes it
+      // between passes) serves the later ones (chord iteration) while the updates at least
+      // halve; a slower iteration gets a fresh matrix.
+      const bool refactor = !settings.reuse_matrix || m == 0 || last_update > 0.5 * previous_update;
+      if (refactor) assembleMatrix(dt);
       std::vector<Real> rhs(dofs()), update;
       for (int i = 0; i < dofs(); ++i) rhs[i] = isFixed(i) ? 0.0 : -residual[i];
-      result.linear_iterations += system->solve(rhs, update);
+      result.linear_iterations += system->solve(rhs, update, refactor);
       ++result.picard_iterations;
+      previous_update = last_update;
       last_update = 0;
       for (int i = 0; i < dofs(); ++i) {
         p[i] += update[i];

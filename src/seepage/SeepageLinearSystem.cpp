@@ -1,5 +1,6 @@
 #include "SeepageLinearSystem.hpp"
 
+#include <Amesos2.hpp>
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
@@ -41,6 +42,7 @@ struct SeepageLinearSystem::Tpetra {
   Teuchos::RCP<Vector> x_everywhere;
   Teuchos::RCP<Preconditioner> preconditioner;
   Teuchos::RCP<Belos::SolverManager<Real, MV, OP>> solver;
+  Teuchos::RCP<Amesos2::Solver<Matrix, MV>> direct;  // Solver: direct (KLU2)
 };
 
 SeepageLinearSystem::SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> comm, int num_dofs,
@@ -78,6 +80,16 @@ SeepageLinearSystem::SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> 
     t_->graph->insertGlobalIndices(row, Teuchos::ArrayView<const T::GO>(cols));
   }
   t_->graph->fillComplete();
+  // The value layout of setValues: the graph's owned rows, columns in increasing order.
+  const auto column_map = t_->graph->getColMap();
+  row_start_.assign(1, 0);
+  for (int row = first_; row < end_; ++row) {
+    for (const T::GO col : columns[row - first_]) {
+      entry_col_.push_back(static_cast<int>(col));
+      entry_local_col_.push_back(column_map->getLocalElement(col));
+    }
+    row_start_.push_back(static_cast<int>(entry_col_.size()));
+  }
   t_->matrix = Teuchos::rcp(new T::Matrix(t_->graph));
   t_->matrix->fillComplete();
   t_->b = Teuchos::rcp(new T::Vector(t_->rows));
@@ -102,11 +114,20 @@ void SeepageLinearSystem::setSolver(const LinearSolverSpec& spec) {
     params->set("Num Blocks", std::min(spec.max_iterations, 300));
     params->set("Maximum Restarts", std::max(1, spec.max_iterations / 300 + 1));
   }
+  t_->direct = Teuchos::null;
+  factorised_ = false;
+  t_->preconditioner = Teuchos::null;
+  preconditioner_initialised_ = false;
+  if (spec.solver == "DIRECT") {
+    // KLU2 ships with Amesos2; the sparsity pattern never changes within a stage, so the
+    // symbolic factorisation (ordering) is done once and each solve refactors numerically.
+    t_->direct = Amesos2::create<T::Matrix, T::MV>("KLU2", t_->matrix, t_->x, t_->b);
+    t_->direct->symbolicFactorization();
+    return;
+  }
   Belos::SolverFactory<Real, T::MV, T::OP> factory;
   t_->solver = factory.create(spec.solver, params);
 
-  t_->preconditioner = Teuchos::null;
-  preconditioner_initialised_ = false;
   if (spec.preconditioner == "NONE") return;
   Teuchos::ParameterList prec;
   if (spec.preconditioner == "RILUK") {
@@ -138,17 +159,52 @@ void SeepageLinearSystem::add(int row, const int* cols, const Real* vals, int co
                                   Teuchos::ArrayView<const Real>(vals, count));
 }
 
+int SeepageLinearSystem::entry(int row, int col) const {
+  if (!owns(row)) return -1;
+  for (int e = row_start_[row - first_]; e < row_start_[row - first_ + 1]; ++e)
+    if (entry_col_[e] == col) return e;
+  return -1;
+}
+
+void SeepageLinearSystem::setValues(const std::vector<Real>& values) {
+  using LO = Tpetra::LO;
+  t_->matrix->resumeFill();
+  for (int row = first_; row < end_; ++row) {
+    const int start = row_start_[row - first_], count = row_start_[row - first_ + 1] - start;
+    t_->matrix->replaceLocalValues(static_cast<LO>(row - first_),
+                                   Teuchos::ArrayView<const LO>(&entry_local_col_[start], count),
+                                   Teuchos::ArrayView<const Real>(&values[start], count));
+  }
+  t_->matrix->fillComplete();
+}
+
 void SeepageLinearSystem::endAssembly() {
   t_->matrix->fillComplete();
 }
 
-int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x) {
-  using T = Tpetra;
+int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x, bool refactor) {
   {
     auto bv = t_->b->getDataNonConst();
     for (int row = first_; row < end_; ++row) bv[row - first_] = b[row];
   }
   t_->x->putScalar(0.0);
+  int iterations = 1;
+  if (!t_->direct.is_null()) {
+    if (refactor || !factorised_) t_->direct->numericFactorization();
+    factorised_ = true;
+    t_->direct->solve();
+  } else {
+    iterations = solveIteratively(refactor);
+  }
+  t_->x_everywhere->doImport(*t_->x, *t_->to_everywhere, ::Tpetra::INSERT);
+  x.assign(num_dofs_, 0.0);
+  const auto xv = t_->x_everywhere->getData();
+  for (int i = 0; i < num_dofs_; ++i) x[i] = xv[i];
+  return iterations;
+}
+
+int SeepageLinearSystem::solveIteratively(bool refactor) {
+  using T = Tpetra;
   auto problem = Teuchos::rcp(new Belos::LinearProblem<Real, T::MV, T::OP>(
       t_->matrix, Teuchos::rcp_static_cast<T::MV>(t_->x),
       Teuchos::rcp_static_cast<const T::MV>(t_->b)));
@@ -157,7 +213,8 @@ int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x)
       t_->preconditioner->initialize();  // symbolic: the graph never changes
       preconditioner_initialised_ = true;
     }
-    t_->preconditioner->compute();
+    if (refactor || !factorised_) t_->preconditioner->compute();
+    factorised_ = true;
     if (spec_.solver == "CG")
       problem->setLeftPrec(t_->preconditioner);
     else
@@ -175,10 +232,6 @@ int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x)
         << t_->solver->achievedTol() << ", |b| = " << t_->b->norm2() << ")";
     throw RunError(out.str());
   }
-  t_->x_everywhere->doImport(*t_->x, *t_->to_everywhere, ::Tpetra::INSERT);
-  x.assign(num_dofs_, 0.0);
-  const auto xv = t_->x_everywhere->getData();
-  for (int i = 0; i < num_dofs_; ++i) x[i] = xv[i];
   return t_->solver->getNumIters();
 }
 

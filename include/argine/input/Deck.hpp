@@ -76,9 +76,9 @@ struct MaterialSpec {
 
 /// The Belos solver and Ifpack2 preconditioner of the implicit seepage path's linear systems.
 struct LinearSolverSpec {
-  std::string solver = "GMRES";          ///< Belos name: "GMRES" or "CG" (CG: symmetric)
-  Real tolerance = 1e-12;                ///< relative residual of each linear solve
-  int max_iterations = 1000;             ///< Krylov iterations per solve
+  std::string solver = "GMRES";  ///< Belos name: "GMRES" or "CG" (CG: symmetric); "DIRECT": KLU2
+  Real tolerance = 1e-12;        ///< relative residual of each linear solve
+  int max_iterations = 1000;     ///< Krylov iterations per solve
   std::string preconditioner = "RILUK";  ///< Ifpack2: RILUK, ILUT, RELAXATION, CHEBYSHEV, NONE
   int fill_level = 1;                    ///< RILUK level of fill / ILUT level-of-fill
   std::string relaxation = "Symmetric Gauss-Seidel";  ///< RELAXATION type
@@ -97,6 +97,7 @@ struct ImplicitSeepageSpec {
   Real pressure_tolerance = 1e-6;      ///< max |dp_L| of the last Picard update (Pa)
   Real mass_tolerance = 1e-12;         ///< |free-node residual| / (storage + flux scale)
   Real min_suction_fraction = 1e-2;    ///< van Genuchten lambda < 0.5: s_reg = this x p_ref
+  bool reuse_matrix = false;           ///< Picard matrix of the step's first iteration only (chord)
   LinearSolverSpec linear;
 };
 

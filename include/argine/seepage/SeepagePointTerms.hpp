@@ -39,14 +39,21 @@ KOKKOS_INLINE_FUNCTION Real liquidContent(const PointMaterial& material, Real pr
 /// constant part: rho(p1) - rho(p0) = rho(p0) expm1((p1 - p0)/K_L) (4.13), so a saturated
 /// compressible change of 1e-7 rho_L keeps its relative precision (mass balance to 1e-10).
 ///   S1 rho1 - S0 rho0 = S1 (rho1 - rho0) + (S1 - S0) rho0.
-KOKKOS_INLINE_FUNCTION Real liquidContentChange(const PointMaterial& material, Real p_new,
-                                                Real p_old) {
+/// The same with the saturations S_L(p_new), S_L(p_old) already evaluated (the implicit
+/// solver keeps S_L(p_old) for the whole step and S_L(p_new) for the whole iteration).
+KOKKOS_INLINE_FUNCTION Real liquidContentChangeFrom(const PointMaterial& material, Real p_new,
+                                                    Real s_new, Real p_old, Real s_old) {
   const Real rho_old = liquidDensity(material.liquid, p_old);
   const Real density_change =
       rho_old * Kokkos::Experimental::expm1((p_new - p_old) / material.liquid.bulk_modulus);
-  const Real s_new = saturationAndConductivity(material, p_new).saturation;
-  const Real s_old = saturationAndConductivity(material, p_old).saturation;
   return s_new * density_change + (s_new - s_old) * rho_old;
+}
+
+KOKKOS_INLINE_FUNCTION Real liquidContentChange(const PointMaterial& material, Real p_new,
+                                                Real p_old) {
+  return liquidContentChangeFrom(material, p_new,
+                                 saturationAndConductivity(material, p_new).saturation, p_old,
+                                 saturationAndConductivity(material, p_old).saturation);
 }
 
 /// Whether the Picard matrix needs the minimum-suction regularisation: van Genuchten with
@@ -78,10 +85,16 @@ KOKKOS_INLINE_FUNCTION Real storageSlope(const PointMaterial& material, Real pre
 
 /// Darcy mass mobility m = rho_L k / (rho_L0 g_k) (s): the mass flux is -m (grad p_L +
 /// rho_L g e_y) (kg/m^2/s). k from the HCC at p_L, g_k = 9.81 as in the HCC's k_sat.
-KOKKOS_INLINE_FUNCTION Real darcyMobility(const PointMaterial& material, Real pressure) {
-  const Real k = saturationAndConductivity(material, pressure).conductivity;
-  return liquidDensity(material.liquid, pressure) * k /
+/// The same with k already evaluated at p_L.
+KOKKOS_INLINE_FUNCTION Real darcyMobilityFrom(const PointMaterial& material, Real pressure,
+                                              Real conductivity) {
+  return liquidDensity(material.liquid, pressure) * conductivity /
          (material.liquid.density * kStandardGravity);
+}
+
+KOKKOS_INLINE_FUNCTION Real darcyMobility(const PointMaterial& material, Real pressure) {
+  return darcyMobilityFrom(material, pressure,
+                           saturationAndConductivity(material, pressure).conductivity);
 }
 
 /// Adds coefficient N_a N_b to out[a][b] for the point's nodes (consistent storage matrix:
