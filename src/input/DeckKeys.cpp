@@ -220,8 +220,7 @@ ListSchema lockingMitigationKeys() {
                   .byDefault(std::string("none")));
   locking.add(KeySpec::choice("Liquid Pressure Averaging", deckWords(kIncrementAveragingWords),
                               "the same averaging of the liquid pressure increment of "
-                              "each point, weighted by its storage (the liquid mass moves "
-                              "with it at unsaturated points)")
+                              "saturated points")
                   .byDefault(std::string("none")));
   return locking;
 }

@@ -88,7 +88,7 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
     strain_ = strain_ || material.locking.volumetric_strain != IncrementAveraging::None;
-    pressure_ = pressure_ || (carriesLiquid(material.phase) &&
+    pressure_ = pressure_ || (material.phase == PhaseModel::Saturated &&
                               material.locking.liquid_pressure != IncrementAveraging::None);
   }
   if (!strain_ && !pressure_) return;
@@ -196,11 +196,10 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
       "averaging_pressure_in", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
         const PointMaterial& material = materials_m(pts.material(p));
-        mode_p(p) = carriesLiquid(material.phase)
+        mode_p(p) = material.phase == PhaseModel::Saturated
                         ? static_cast<int>(material.locking.liquid_pressure)
                         : kNone;
-        weight_p(p) = pressureAveragingWeight(material, pts.porosity(p), pts.volume(p), old_p(p),
-                                              pts.pressure_liquid(p));
+        weight_p(p) = pts.porosity(p) * pts.volume(p);
         value_p(p) = pts.pressure_liquid(p) - old_p(p);
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
@@ -211,21 +210,6 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
         if (mode_p(p) == kNone || pts.element(p) < 0) return;
         const PointMaterial& material = materials_m(pts.material(p));
         const Real pressure = old_p(p) + value_p(p);
-        if (material.phase == PhaseModel::Unsaturated) {
-          // Storage-weighted: the mass moves with the pressure increment it is given, so
-          // sum M_L is kept exactly; p_L is the one that stores the new mass (LiquidState).
-          const Real mass = averagedLiquidMass(pts.mass_liquid(p), weight_p(p),
-                                               pts.pressure_liquid(p) - old_p(p), value_p(p));
-          const Real next =
-              pressureOfLiquidContent(material, mass / (pts.porosity(p) * pts.volume(p)), pressure);
-          const LiquidState state = saturationAndConductivity(material, next);
-          pts.pressure_liquid(p) = next;
-          pts.density_liquid(p) = liquidDensity(material.liquid, next);  // 4.13
-          pts.mass_liquid(p) = mass;
-          pts.saturation(p) = state.saturation;
-          pts.conductivity(p) = state.conductivity;
-          return;
-        }
         const Real rho = liquidDensity(material.liquid, pressure);  // 4.13
         pts.pressure_liquid(p) = pressure;
         pts.density_liquid(p) = rho;

@@ -37,7 +37,7 @@ struct SolidSpec {
 /// Volumetric-locking / cell-crossing mitigation of a material.
 struct LockingMitigationSpec {
   IncrementAveraging volumetric_strain = IncrementAveraging::None;  ///< d eps_vol of the solid
-  IncrementAveraging liquid_pressure = IncrementAveraging::None;    ///< d p_L (liquid-carrying points)
+  IncrementAveraging liquid_pressure = IncrementAveraging::None;    ///< d p_L (saturated points)
 };
 
 struct LiquidSpec {

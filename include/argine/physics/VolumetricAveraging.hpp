@@ -21,51 +21,13 @@
 /// sum V q, the change of the element (element) or of the body (nodal): volume and liquid
 /// mass are conserved.
 ///
-/// Liquid: q = d p_L of the step at liquid-carrying points, w = the point's storage over the
-/// step, n V Delta(S_L rho_L) / d p_L (4.12; ~ n V rho_L / K_L when saturated), so that
-/// w d p_L is the liquid mass the increment stores (pressureAveragingWeight).
-///   saturated material: rho_L from (4.13) and M_L = n rho_L V; sum w d p_L is kept, so the
-///     liquid mass is kept to first order in d p_L / K_L.
-///   unsaturated material: M_L <- M_L + w (averaged d p_L - own d p_L) (the mass follows the
-///     pressure increment it is given: sum M_L is kept exactly), then p_L, rho_L, S_L, k from
-///     that mass as in the mass balance (LiquidState.hpp). Without it, the points of a Tri3
-///     element, which share one flux divergence, all carry the element's p_L: a profile
-///     with a gradient (hydrostatic, rho_L g) is then off by rho_L g |y_p - y_centroid| at
-///     every point (the V3 infiltration column: 170 Pa, 8.8 % of the range, doc/verification.md).
-///     The storage weight makes a nearly saturated point (storage ~ n V rho_L / K_L) take the
-///     pressure of its unsaturated neighbours rather than their liquid mass.
+/// Liquid: q = d p_L of the step at saturated points, w = n V (pore volume); then rho_L from
+/// (4.13) and M_L = n rho_L V. sum n V d p_L is kept, so the liquid mass is kept to first
+/// order in d p_L / K_L.
 
 #include "argine/core/Types.hpp"
-#include "argine/physics/LiquidState.hpp"
 
 namespace argine {
-
-/// Weight of a point's pressure increment from `before` to `after` in the liquid-pressure
-/// averaging: its storage n V [S_L rho_L](after) - [S_L rho_L](before)) / (after - before)
-/// (kg/Pa per m), the liquid mass the increment stores at constant n V (4.12, 4.13). The
-/// secant, not the tangent: an increment across the saturation kink (s = 0), where the
-/// storage drops from n V rho_L dS_L/ds to n V rho_L / K_L, is weighted by what it stored.
-/// Increments below 1e-6 Pa take the tangent n V rho_L (S_L/K_L - dS_L/ds) at `before`.
-KOKKOS_INLINE_FUNCTION Real pressureAveragingWeight(const PointMaterial& material, Real porosity,
-                                                    Real volume, Real before, Real after) {
-  const Real pore_volume = porosity * volume;
-  const LiquidState old_state = liquidState(material, before);
-  const Real old_density = liquidDensity(material.liquid, before);
-  if (!(kmath::fabs(after - before) > 1e-6))
-    return pore_volume * liquidContentSlope(old_density, old_state.saturation,
-                                            old_state.saturation_suction_derivative,
-                                            material.liquid.bulk_modulus);
-  const Real new_content =
-      saturationAndConductivity(material, after).saturation * liquidDensity(material.liquid, after);
-  return pore_volume * (new_content - old_state.saturation * old_density) / (after - before);
-}
-
-/// Liquid mass of a point after the averaging replaced its pressure increment `own` by
-/// `averaged`: M_L + w (averaged - own), w = pressureAveragingWeight. The sum over the
-/// averaged points is unchanged, as sum w averaged = sum w own (file comment).
-KOKKOS_INLINE_FUNCTION Real averagedLiquidMass(Real mass, Real weight, Real own, Real averaged) {
-  return mass + weight * (averaged - own);
-}
 
 class ActiveNodes;
 class MaterialTable;
@@ -91,8 +53,8 @@ class VolumetricAveraging {
                                PointRates& rates);
   /// Keeps p_L of every point before the liquid mass balance of the step.
   void rememberPressures(const MaterialPoints& points);
-  /// After the mass balance: averages d p_L = p_L - remembered p_L of the liquid-carrying
-  /// points whose material asks for it; rho_L and M_L (and S_L, k: unsaturated) follow.
+  /// After the mass balance: averages d p_L = p_L - remembered p_L of the saturated points
+  /// whose material asks for it; rho_L and M_L follow.
   void averagePressureIncrements(const MaterialTable& table, const MaterialPoints& points,
                                  const PointShapes& shapes, const ActiveNodes& active);
 
