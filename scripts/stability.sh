@@ -3,7 +3,7 @@
 # sweep (sets saturation, permeability, mesh, realistic) as two shards in parallel, merges
 # the CSV into verification/stability/results/ and draws doc/figures/stability_*.png.
 #   scripts/stability.sh            full sweep, 179 cases (~13 min wall on 2 busy cores)
-#   scripts/stability.sh quick      the 6-case subset of the unit test (~10 s CPU)
+#   scripts/stability.sh quick      the 7-case subset of the unit test (~10 s CPU)
 # ARGINE_BUILD_DIR (default build/) and ARGINE_STABILITY_SHARDS (default 2) are honoured.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

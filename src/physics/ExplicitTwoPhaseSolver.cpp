@@ -231,6 +231,9 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
   interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
   // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
   averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
+  // No point gives away more than its mobile liquid (LiquidOutflowLimit.hpp); a no-op
+  // unless a point near residual saturation is asked for more.
+  outflow_limited_ = outflow_limit_.apply(table_, points_, shapes_, rates_).limited_points;
 }
 
 void ExplicitTwoPhaseSolver::updatePointStates() {
@@ -275,6 +278,7 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
   diagnostics_.kinetic_energy_liquid = totals.kinetic_energy_liquid;
   diagnostics_.liquid_mass = totals.liquid_mass;
   diagnostics_.active_nodes = nodes_in_use_.count();
+  diagnostics_.outflow_limited_points = outflow_limited_;
   diagnostics_.time_step_choice = time_step_.last();
 
   auto fail = [&](const std::string& what) {

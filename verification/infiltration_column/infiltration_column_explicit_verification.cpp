@@ -4,8 +4,10 @@
 // the V3 implicit driver (Tri3 h/4 = 0.0125 m, steps <= 0.5 s, backward Euler). At 100, 200,
 // 400 and 600 s: max over the points of |p_L - p_ref(y)| and |S_L - S_ref(y)|, each over the
 // reference's range along the column at that time (p_ref interpolated linearly between the
-// reference's nodes on x = 0, S_ref = SWRC(p_ref)). VERIFICATION.md V3 asks for 2 %; the
-// bound is asserted only with --assert (see doc/verification.md). Also prints the explicit
+// reference's nodes on x = 0, S_ref = SWRC(p_ref)). VERIFICATION.md V3 asks for 2 %; that
+// point-wise bound is asserted only with --assert (not met: on Tri3 the points of a triangle
+// carry its centroid's p_L, see doc/verification.md). Asserted always: the element means
+// against the reference at the element centroids, within the same 2 %. Also prints the explicit
 // run's liquid balance |storage - inflow| / inflow and writes
 // infiltration_column_explicit_profiles.csv (time, y, p_L, S_L of every point; the reference
 // nodes as run "reference").
@@ -93,7 +95,18 @@ int run(int argc, char** argv) {
   const Real duration = options.number("duration", kTimes.back());
   std::ofstream out(output + "/infiltration_column_explicit_profiles.csv");
   out << "run,time,y,p_L,S_L\n";
-  Real worst_p = 0, worst_s = 0, worst_balance = 0;
+  Real worst_p = 0, worst_s = 0, worst_balance = 0, worst_mean_p = 0, worst_mean_s = 0;
+  // Element means at the element centroids: on Tri3 the points of a triangle share one flux
+  // divergence and carry one p_L, the value of the triangle's centroid (doc/verification.md,
+  // V3 explicit root cause); compared there, the profile is that of the element means.
+  const argine::Mesh& mesh = explicit_run.mesh();
+  const auto nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
+  const auto node_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
+  std::vector<Real> centroid_y(mesh.numElements(), 0.0);
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const int corners = static_cast<int>(nodes.extent(1));
+    for (int a = 0; a < corners; ++a) centroid_y[e] += node_x(nodes(e, a), 1) / corners;
+  }
   for (std::size_t k = 0; k < kTimes.size(); ++k) {
     if (kTimes[k] > duration + 1e-9) break;
     explicit_run.advanceTo(kTimes[k]);
@@ -105,7 +118,22 @@ int run(int argc, char** argv) {
     const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.position);
     const auto P = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.pressure_liquid);
     const auto S = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.saturation);
-    Real error_p = 0, error_s = 0;
+    Real error_p = 0, error_s = 0, mean_error_p = 0, mean_error_s = 0;
+    const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
+    std::vector<Real> sum_p(mesh.numElements(), 0.0), sum_s(mesh.numElements(), 0.0);
+    std::vector<int> in_element(mesh.numElements(), 0);
+    for (int i = 0; i < points.count; ++i)
+      if (element(i) >= 0) {
+        sum_p[element(i)] += P(i), sum_s[element(i)] += S(i);
+        in_element[element(i)] += 1;
+      }
+    for (int e = 0; e < mesh.numElements(); ++e) {
+      if (in_element[e] == 0) continue;
+      const Real p_ref = interpolate(ref, centroid_y[e]);
+      mean_error_p = std::max(mean_error_p, std::fabs(sum_p[e] / in_element[e] - p_ref) / range_p);
+      mean_error_s = std::max(mean_error_s,
+                              std::fabs(sum_s[e] / in_element[e] - saturationOf(p_ref)) / range_s);
+    }
     for (int i = 0; i < points.count; ++i) {
       const Real p_ref = interpolate(ref, X(i, 1));
       error_p = std::max(error_p, std::fabs(P(i) - p_ref) / range_p);
@@ -117,6 +145,8 @@ int run(int argc, char** argv) {
           << saturationOf(ref.p[j]) << '\n';
     const Real inflow = explicit_run.totalInflow(), storage = explicit_run.storageChange();
     const Real balance = std::fabs(storage - inflow) / std::max(std::fabs(inflow), Real(1e-300));
+    worst_mean_p = std::max(worst_mean_p, mean_error_p);
+    worst_mean_s = std::max(worst_mean_s, mean_error_s);
     worst_p = std::max(worst_p, error_p);
     worst_s = std::max(worst_s, error_s);
     worst_balance = std::max(worst_balance, balance);
@@ -126,13 +156,22 @@ int run(int argc, char** argv) {
         "%ld steps, %.1f s wall\n",
         kTimes[k], 100 * error_p, range_p, 100 * error_s, storage, inflow, explicit_run.steps(),
         explicit_run.wallSeconds());
+    std::printf(
+        "[ V3x ] t = %3.0f s: element means vs the reference at the element centroids: "
+        "|dp_L| %.2f %%, |dS_L| %.2f %% of the range\n",
+        kTimes[k], 100 * mean_error_p, 100 * mean_error_s);
   }
   const bool met = worst_p <= 0.02 && worst_s <= 0.02;
   std::printf(
       "[ V3x ] explicit vs implicit reference: p_L %.2f %%, S_L %.2f %% of range "
       "(VERIFICATION.md bound 2 %%: %s); liquid balance %.2e\n",
       100 * worst_p, 100 * worst_s, met ? "met" : "NOT met", worst_balance);
-  const bool ok = worst_balance <= 1e-3 && (!options.has("assert") || met);
+  std::printf("[ V3x ] element means at the element centroids: p_L %.2f %%, S_L %.2f %% of range\n",
+              100 * worst_mean_p, 100 * worst_mean_s);
+  // Asserted: the balance and the element means (2 %, the V3 bound applied to what a Tri3
+  // element carries); the point-wise V3 criterion only with --assert (not met: 8.8 %).
+  const bool means_met = worst_mean_p <= 0.02 && worst_mean_s <= 0.02;
+  const bool ok = worst_balance <= 1e-3 && means_met && (!options.has("assert") || met);
   std::printf("[ V3x ] %s\n", ok ? "PASS" : "FAIL: a bound is exceeded");
   return ok ? 0 : av::kExitBoundExceeded;
 }

@@ -18,7 +18,9 @@
 ///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs, the
 ///                               infiltration / seepage corrections re-imposed
 ///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
-///                               volumetric averaging of d eps if a material asks for it
+///                               volumetric averaging of d eps if a material asks for it;
+///                               the donor limit of the outflow at dry points
+///                               (LiquidOutflowLimit.hpp)
 ///   accountBoundaryFluxes       liquid volume through each hydraulic condition
 ///   updatePointStates           steps 5-7 in one pass over the points, per point:
 ///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
@@ -62,6 +64,7 @@
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
+#include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
 #include "argine/physics/StabilityCheck.hpp"
@@ -92,6 +95,7 @@ struct StepDiagnostics {
   Real liquid_mass = 0;             ///< sum M_L (kg per m thickness)
   int lost_points = 0;              ///< points that left the mesh (element -1)
   int active_nodes = 0;             ///< nodes the last step computed on
+  int outflow_limited_points = 0;   ///< points whose outflow the donor limit capped
   TimeStepChoice time_step_choice;  ///< how the last automatic/fixed step was chosen
 };
 
@@ -237,7 +241,9 @@ class ExplicitTwoPhaseSolver {
   bool free_boundary_stale_ = true;  ///< a point changed element since the last detection
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
-  VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
+  VolumetricAveraging averaging_;     ///< anti-locking averaging (materials' Locking Mitigation)
+  LiquidOutflowLimit outflow_limit_;  ///< donor limit of the mass balance at dry points
+  int outflow_limited_ = 0;           ///< points it capped in this step
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   Real gravity_ = 0;
