@@ -7,7 +7,7 @@ namespace argine {
 void checkDeckTimeSeries(const Deck& deck) {
   for (const StageSpec& stage : deck.stages)
     for (const BoundarySpec& boundary : stage.boundaries)
-      (void)makeTimeSeries(boundary.hydraulic.series);  // throws InputError(where) when bad
+      (void)makeTimeSeries(boundary.hydraulic.series, 0);  // InputError(where) when bad
 }
 
 }  // namespace argine
