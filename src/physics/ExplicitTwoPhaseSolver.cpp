@@ -6,7 +6,11 @@
 
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
+#include "argine/materials/KernelMath.hpp"
 #include "argine/mesh/Mesh.hpp"
+#include "argine/parallel/PointMigration.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
+#include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/PointInitialisation.hpp"
 #include "argine/physics/PointUpdates.hpp"
@@ -100,14 +104,52 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
         KOKKOS_LAMBDA(const int p) {
           for (int d = 0; d < kDim; ++d) pts.velocity_solid(p, d) = 0;
         });
-  energy_scale_ =
-      energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  if (ranks_) {  // the point sums over the ranks; the boundary loads once
+    std::vector<Real> scale{energyScale(points_, table_, gravity_, 0, mesh_size_)};
+    sumOverRanks(ranks_->comm(), scale);
+    energy_scale_ = scale[0] + boundaries_.totalLoadMagnitude() * mesh_size_;
+  } else {
+    energy_scale_ =
+        energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  }
   stage_started_ = true;
 }
 
 const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
   PhaseTimer timer(profile_, StepPhase::TimeStep);
-  return time_step_.next(points_, table_);
+  if (!ranks_) return time_step_.next(points_, table_);
+  TimeStepChoice local;
+  local.time_step = local.critical_step = kmath::infinity();
+  if (points_.count > 0) local = time_step_.next(points_, table_);
+  global_choice_ = globalTimeStep(ranks_->comm(), local);
+  return global_choice_;
+}
+
+// ------------------------------------------------------------------ several ranks
+
+void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) {
+  for (int m = 0; m < table_.count(); ++m) {
+    const auto& locking = table_.host(m).locking;
+    if (locking.volumetric_strain == IncrementAveraging::Nodal ||
+        locking.liquid_pressure == IncrementAveraging::Nodal)
+      throw InputError("Materials/Locking Mitigation",
+                       "element averaging on several MPI ranks (nodal averaging is not "
+                       "distributed yet)");
+  }
+  ranks_ = &decomposition;
+  exchange_ = std::make_unique<NodalExchange>(decomposition);
+  keepOwnedPoints(decomposition, points_);
+  rates_.allocate(points_.count);
+  evaluatePointShapes(mesh_, points_, shapes_);
+  nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
+  nodes_next_changed_ = true;
+  free_boundary_stale_ = true;
+}
+
+Kokkos::View<const int*, MemSpace> ExplicitTwoPhaseSolver::alwaysActiveNodes() const {
+  // A shared node is cleared, completed and solved on every rank holding it, whether or not
+  // this rank's points touch it, so that all ranks hold the same value there.
+  return ranks_ ? ranks_->sharedNodeView() : Kokkos::View<const int*, MemSpace>();
 }
 
 void ExplicitTwoPhaseSolver::step(Real dt) {
@@ -155,6 +197,7 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
   nodes_next_changed_ = false;
   mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_);
+  if (exchange_) sumGridAtSharedNodes(*exchange_, grid_);  // several ranks: complete the sums
   boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
                              grid_.force_liquid_i);
   computeNodalVelocities(nodes_in_use_, grid_);
@@ -163,7 +206,11 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
 void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   // The free boundary changes only when a point changes element (Fig. 4.4).
   if (!free_boundary_stale_) return;
-  free_boundary_.detect(points_);
+  if (ranks_)  // the elements holding points on any rank
+    free_boundary_.detectFromActiveElements(
+        globalActiveElements(ranks_->comm(), points_, mesh_.numElements()));
+  else
+    free_boundary_.detect(points_);
   free_boundary_stale_ = false;
 }
 
@@ -173,7 +220,8 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   hydraulic_.plan(time_, gravity_, free_boundary_);
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
-                       boundary_fields_);                // 4.51, n_L, flux weights at t^k
+                       boundary_fields_);  // 4.51, n_L, flux weights at t^k
+  if (exchange_) sumBoundaryGradientsAtSharedNodes(*exchange_, boundary_fields_);
   argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
 }
 
@@ -190,8 +238,11 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
 void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   if (hydraulic_.empty()) return;
   const int conditions = static_cast<int>(hydraulic_.conditions().size());
-  const std::vector<Real> masses = boundaryFluxMasses(hydraulic_.ownership(), conditions,
-                                                      nodes_in_use_, boundary_fields_, grid_, dt);
+  if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
+  std::vector<Real> masses =
+      boundaryFluxMasses(hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_,
+                         boundary_fields_, grid_, dt);
+  if (ranks_) sumOverRanks(ranks_->comm(), masses);  // each node counted on its owner
   for (int c = 0; c <= conditions; ++c)
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
@@ -213,6 +264,10 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // and sums the kinetic energies, in the same pass over the points.
   kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
                                                 points_, grid_);
+  if (exchange_) {
+    sumMomentaAtSharedNodes(*exchange_, grid_);
+    sumOverRanks(ranks_->comm(), kinetic_);
+  }
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
@@ -236,17 +291,30 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
 void ExplicitTwoPhaseSolver::updatePointStates() {
   averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
   totals_ = argine::updatePointStates(table_, rates_, points_);
+  if (ranks_) sumOverRanks(ranks_->comm(), totals_);
   // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
   averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {
-  const RelocationCounts counts =
+  RelocationCounts counts =
       relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  if (ranks_) {  // points that entered another rank's element move there
+    const MigrationCounts moved = migratePoints(*ranks_, points_);
+    migrated_points_ += moved.total;
+    if (moved.sent > 0 || moved.received > 0) {
+      relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+      time_step_.pointsReordered(points_);
+    }
+    long long both[2] = {counts.lost, counts.changed_element};
+    MPI_Allreduce(MPI_IN_PLACE, both, 2, MPI_LONG_LONG, MPI_SUM, ranks_->comm());
+    counts.lost = static_cast<int>(both[0]);
+    counts.changed_element = static_cast<int>(both[1]);
+  }
   diagnostics_.lost_points = counts.lost;
   // No point changed element (the common case): the active nodes stay nodes_in_use_.
   if (counts.changed_element > 0) {
-    nodes_next_.rebuild(mesh_, points_);
+    nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
     nodes_next_changed_ = true;
     free_boundary_stale_ = true;
   }
@@ -275,7 +343,7 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
   diagnostics_.kinetic_energy_liquid = totals.kinetic_energy_liquid;
   diagnostics_.liquid_mass = totals.liquid_mass;
   diagnostics_.active_nodes = nodes_in_use_.count();
-  diagnostics_.time_step_choice = time_step_.last();
+  diagnostics_.time_step_choice = ranks_ ? global_choice_ : time_step_.last();
 
   auto fail = [&](const std::string& what) {
     std::ostringstream out;
@@ -288,7 +356,7 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
     std::ostringstream out;
     out << totals.non_finite_points
         << " point(s) with non-finite values or collapsed volume, first "
-        << describePoint(points_, point, true);
+        << (point >= 0 ? describePoint(points_, point, true) : "on another MPI rank");
     fail(out.str());
   }
   const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
@@ -296,8 +364,9 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
   if (kinetic > bound && kinetic > 0) {
     std::ostringstream out;
     out << "kinetic energy " << kinetic << " J/m exceeds " << energy_growth_limit_
-        << " x the stage's energy scale " << energy_scale_
-        << " J/m; most energetic: " << describePoint(points_, mostEnergeticPoint(points_), false);
+        << " x the stage's energy scale " << energy_scale_ << " J/m; most energetic: "
+        << (points_.count > 0 ? describePoint(points_, mostEnergeticPoint(points_), false)
+                              : "on another MPI rank");
     fail(out.str());
   }
 }

@@ -53,6 +53,7 @@
 ///   }
 ///   std::printf("%s", solver.profile().describe().c_str());   // where the time went
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,7 @@
 #include "argine/boundary/HydraulicConditions.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
@@ -80,6 +82,7 @@ namespace argine {
 struct MaterialPoints;
 struct MaterialSpec;
 struct Mesh;
+class RankDecomposition;
 struct StageSpec;
 
 /// What the last step did, for logs, probes and output.
@@ -175,6 +178,24 @@ class ExplicitTwoPhaseSolver {
   /// large deformations are ordered again quickly (see verification/benchmark).
   static constexpr int kRecommendedSortInterval = 50;
 
+  // ---- several MPI ranks (doc/parallel.md; the communication is physics/DistributedStep.hpp)
+  /// Runs the steps on the ranks of `decomposition` (kept by reference; it must outlive the
+  /// solver): keeps only the points of this rank's elements (every rank seeded the same
+  /// points), then each step completes the nodal sums at the shared nodes, reduces the
+  /// sums and the time step over the ranks and migrates the points that cross into another
+  /// rank's elements. Collective: every rank calls the same solver functions in the same
+  /// order. Call once, before the first beginStage. InputError for a material with nodal
+  /// volumetric averaging (not distributed yet).
+  void distribute(const RankDecomposition& decomposition);
+  /// The decomposition (nullptr on one rank without distribute()).
+  const RankDecomposition* decomposition() const { return ranks_; }
+  /// Points moved between ranks since distribute() (sum over all ranks and steps).
+  long long migratedPoints() const { return migrated_points_; }
+  /// This rank's nodal exchange traffic (nullptr without distribute()).
+  const ExchangeTraffic* exchangeTraffic() const {
+    return exchange_ ? &exchange_->traffic() : nullptr;
+  }
+
   /// Wall time per phase of the steps (and chooseTimeStep calls) since construction or the
   /// last resetProfile(), with the number of steps and point updates.
   const StepProfile& profile() const { return profile_; }
@@ -234,6 +255,14 @@ class ExplicitTwoPhaseSolver {
   int sort_interval_ = 0;
   StepProfile profile_;
   std::vector<Kokkos::View<Real*, MemSpace>> output_;  ///< scalar copies for nodalFields()
+
+  // ---- several MPI ranks (distribute())
+  Kokkos::View<const int*, MemSpace> alwaysActiveNodes() const;  ///< shared nodes, or none
+  const RankDecomposition* ranks_ = nullptr;
+  std::unique_ptr<NodalExchange> exchange_;
+  ActiveNodes nodes_owned_;       ///< active nodes this rank owns (sums over nodes)
+  TimeStepChoice global_choice_;  ///< the last step chosen over all ranks
+  long long migrated_points_ = 0;
 };
 
 }  // namespace argine

@@ -1,0 +1,54 @@
+#pragma once
+/// @file DistributedStep.hpp
+/// The communication of the explicit step over several MPI ranks (doc/parallel.md), as
+/// named functions that ExplicitTwoPhaseSolver calls at fixed points of step() when it runs
+/// on a RankDecomposition. Per step:
+///   after mapPointsToGrid            sumGridAtSharedNodes (13 values per shared node)
+///   after mapBoundaryGradients       sumBoundaryGradientsAtSharedNodes (5; hydraulic
+///                                    conditions only)
+///   after the momentum remap         sumMomentaAtSharedNodes (4)
+///   sums over points / nodes         Allreduce (energies, liquid mass, fluxes, counts)
+///   time step                        globalTimeStep (min over ranks)
+///   after a point changed element    globalActiveElements (the free boundary)
+///   relocation                       migratePoints (parallel/PointMigration.hpp)
+
+#include <vector>
+
+#include "argine/core/Types.hpp"
+#include "argine/parallel/NodalExchange.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
+
+namespace argine {
+
+struct BoundaryGradientFields;
+struct GridFields;
+struct KineticTotals;
+struct MaterialPoints;
+struct PointTotals;
+struct TimeStepChoice;
+
+/// Completes the P2G of mapPointsToGrid at the shared nodes: masses, drag, liquid volume,
+/// momenta and forces, in one message per neighbour.
+void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& grid);
+/// Completes the remapped momenta (updatePointVelocitiesAndMapMomenta) at the shared nodes.
+void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& grid);
+/// Completes mapBoundaryGradients at the shared nodes (mass gradient, flux weights, wet
+/// volume).
+void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& fields);
+
+/// Sums of the point totals / kinetic totals over the ranks.
+void sumOverRanks(MPI_Comm comm, PointTotals& totals);
+void sumOverRanks(MPI_Comm comm, KineticTotals& totals);
+/// Element-wise sum of `values` over the ranks (in place).
+void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);
+long long sumOverRanks(MPI_Comm comm, long long value);
+
+/// The smallest step over the ranks with the choice of the rank that gave it (its governing
+/// criterion, point id and position; `point` is an index on that rank only, -1 elsewhere).
+/// A rank without points passes a choice with time_step = infinity.
+TimeStepChoice globalTimeStep(MPI_Comm comm, const TimeStepChoice& local);
+
+/// The elements holding at least one located point on ANY rank, ascending (collective).
+std::vector<int> globalActiveElements(MPI_Comm comm, const MaterialPoints& points, int elements);
+
+}  // namespace argine

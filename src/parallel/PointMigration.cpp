@@ -1,0 +1,136 @@
+#include "argine/parallel/PointMigration.hpp"
+
+#include <mpi.h>
+
+#include "argine/parallel/RankDecomposition.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/points/PointFields.hpp"
+
+namespace argine {
+
+namespace {
+
+template <class View>
+int componentsOf(const View& view) {
+  return View::rank == 2 ? static_cast<int>(view.extent(1)) : 1;
+}
+
+}  // namespace
+
+int migratedValuesPerPoint(const MaterialPoints& points) {
+  int values = 0;
+  forEachPointField(points, [&](const char*, const auto& field) { values += componentsOf(field); });
+  return values;
+}
+
+namespace {
+
+// Packs point p (all fields) into out[0, values) as doubles.
+void packPoint(const MaterialPoints& points, int p, Real* out) {
+  forEachPointField(points, [&](const char*, const auto& field) {
+    if constexpr (std::decay_t<decltype(field)>::rank == 2) {
+      for (int c = 0; c < static_cast<int>(field.extent(1)); ++c)
+        *out++ = static_cast<Real>(field(p, c));
+    } else {
+      *out++ = static_cast<Real>(field(p));
+    }
+  });
+}
+
+void unpackPoint(const Real* in, MaterialPoints& points, int p) {
+  forEachPointField(points, [&](const char*, auto& field) {
+    using Value = typename std::decay_t<decltype(field)>::value_type;
+    if constexpr (std::decay_t<decltype(field)>::rank == 2) {
+      for (int c = 0; c < static_cast<int>(field.extent(1)); ++c)
+        field(p, c) = static_cast<Value>(*in++);
+    } else {
+      field(p) = static_cast<Value>(*in++);
+    }
+  });
+}
+
+// A new set of points: the kept ones of `points` (in order), then the received values.
+MaterialPoints rebuildPoints(const MaterialPoints& points, const std::vector<int>& kept,
+                             const std::vector<Real>& received, int values) {
+  const int arrived = static_cast<int>(received.size() / values);
+  MaterialPoints next;
+  next.allocate(static_cast<int>(kept.size()) + arrived);
+  std::vector<Real> buffer(values);
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    packPoint(points, kept[k], buffer.data());
+    unpackPoint(buffer.data(), next, static_cast<int>(k));
+  }
+  for (int k = 0; k < arrived; ++k)
+    unpackPoint(&received[static_cast<std::size_t>(k) * values], next,
+                static_cast<int>(kept.size()) + k);
+  return next;
+}
+
+}  // namespace
+
+MigrationCounts migratePoints(const RankDecomposition& decomposition, MaterialPoints& points) {
+  static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
+                "point migration packs on the host");
+  MigrationCounts counts;
+  const int ranks = decomposition.size(), me = decomposition.rank();
+  if (ranks == 1) return counts;
+  const auto& owner = decomposition.elementOwners();
+  const int values = migratedValuesPerPoint(points);
+
+  std::vector<int> send_counts(ranks, 0);
+  for (int p = 0; p < points.count; ++p) {
+    const int e = points.element(p);
+    if (e >= 0 && owner[e] != me) ++send_counts[owner[e]];
+  }
+  std::vector<int> receive_counts(ranks, 0);
+  MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
+               decomposition.comm());
+  for (int r = 0; r < ranks; ++r)
+    counts.sent += send_counts[r], counts.received += receive_counts[r];
+  long long moved = counts.sent;
+  MPI_Allreduce(&moved, &counts.total, 1, MPI_LONG_LONG, MPI_SUM, decomposition.comm());
+  if (counts.total == 0) return counts;
+
+  std::vector<int> send_offsets(ranks + 1, 0), receive_offsets(ranks + 1, 0);
+  for (int r = 0; r < ranks; ++r) {
+    send_offsets[r + 1] = send_offsets[r] + send_counts[r] * values;
+    receive_offsets[r + 1] = receive_offsets[r] + receive_counts[r] * values;
+  }
+  std::vector<Real> send(send_offsets[ranks]), received(receive_offsets[ranks]);
+  std::vector<int> fill(send_offsets.begin(), send_offsets.end() - 1);
+  std::vector<int> kept;
+  kept.reserve(points.count);
+  for (int p = 0; p < points.count; ++p) {
+    const int e = points.element(p);
+    if (e >= 0 && owner[e] != me) {
+      packPoint(points, p, &send[fill[owner[e]]]);
+      fill[owner[e]] += values;
+    } else {
+      kept.push_back(p);
+    }
+  }
+  std::vector<int> send_sizes(ranks), receive_sizes(ranks);
+  for (int r = 0; r < ranks; ++r) {
+    send_sizes[r] = send_counts[r] * values;
+    receive_sizes[r] = receive_counts[r] * values;
+  }
+  MPI_Alltoallv(send.data(), send_sizes.data(), send_offsets.data(), MPI_DOUBLE, received.data(),
+                receive_sizes.data(), receive_offsets.data(), MPI_DOUBLE, decomposition.comm());
+  if (counts.sent > 0 || counts.received > 0)
+    points = rebuildPoints(points, kept, received, values);
+  return counts;
+}
+
+void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& points) {
+  const auto& owner = decomposition.elementOwners();
+  const int me = decomposition.rank();
+  std::vector<int> kept;
+  for (int p = 0; p < points.count; ++p) {
+    const int e = points.element(p);
+    if (e >= 0 ? owner[e] == me : me == 0) kept.push_back(p);
+  }
+  if (static_cast<int>(kept.size()) == points.count) return;
+  points = rebuildPoints(points, kept, {}, migratedValuesPerPoint(points));
+}
+
+}  // namespace argine
