@@ -68,12 +68,37 @@ MaterialPoints rebuildPoints(const MaterialPoints& points, const std::vector<int
 
 }  // namespace
 
+int countEmigrants(const RankDecomposition& decomposition, const MaterialPoints& points) {
+  if (decomposition.size() == 1) return 0;
+  const auto owner_e = decomposition.elementOwnerView();
+  const auto element_p = points.element;
+  const int me = decomposition.rank();
+  int count = 0;
+  Kokkos::parallel_reduce(
+      "count_emigrants", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, int& sum) {
+        const int e = element_p(p);
+        sum += (e >= 0 && owner_e(e) != me) ? 1 : 0;
+      },
+      count);
+  return count;
+}
+
 MigrationCounts migratePoints(const RankDecomposition& decomposition, MaterialPoints& points) {
+  if (decomposition.size() == 1) return MigrationCounts{};
+  long long total = countEmigrants(decomposition, points);
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, decomposition.comm());
+  return exchangePoints(decomposition, points, total);
+}
+
+MigrationCounts exchangePoints(const RankDecomposition& decomposition, MaterialPoints& points,
+                               long long total) {
   static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
                 "point migration packs on the host");
   MigrationCounts counts;
+  counts.total = total;
   const int ranks = decomposition.size(), me = decomposition.rank();
-  if (ranks == 1) return counts;
+  if (ranks == 1 || total == 0) return counts;
   const auto& owner = decomposition.elementOwners();
   const int values = migratedValuesPerPoint(points);
 
@@ -87,9 +112,6 @@ MigrationCounts migratePoints(const RankDecomposition& decomposition, MaterialPo
                decomposition.comm());
   for (int r = 0; r < ranks; ++r)
     counts.sent += send_counts[r], counts.received += receive_counts[r];
-  long long moved = counts.sent;
-  MPI_Allreduce(&moved, &counts.total, 1, MPI_LONG_LONG, MPI_SUM, decomposition.comm());
-  if (counts.total == 0) return counts;
 
   std::vector<int> send_offsets(ranks + 1, 0), receive_offsets(ranks + 1, 0);
   for (int r = 0; r < ranks; ++r) {

@@ -29,22 +29,9 @@ void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradient
       {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
 }
 
-void sumOverRanks(MPI_Comm comm, PointTotals& totals) {
-  Real sums[4] = {totals.kinetic_energy_solid, totals.kinetic_energy_liquid, totals.liquid_mass,
-                  static_cast<Real>(totals.non_finite_points)};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 4, MPI_DOUBLE, MPI_SUM, comm);
-  totals.kinetic_energy_solid = sums[0];
-  totals.kinetic_energy_liquid = sums[1];
-  totals.liquid_mass = sums[2];
-  totals.non_finite_points = static_cast<int>(sums[3]);
-}
-
-void sumOverRanks(MPI_Comm comm, KineticTotals& totals) {
-  Real sums[3] = {totals.solid, totals.liquid, static_cast<Real>(totals.non_finite_points)};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
-  totals.solid = sums[0];
-  totals.liquid = sums[1];
-  totals.non_finite_points = static_cast<int>(sums[2]);
+void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums) {
+  static_assert(sizeof(EndOfStepSums) == 8 * sizeof(Real));
+  MPI_Allreduce(MPI_IN_PLACE, &sums, 8, MPI_DOUBLE, MPI_SUM, comm);
 }
 
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values) {
@@ -58,18 +45,19 @@ long long sumOverRanks(MPI_Comm comm, long long value) {
 }
 
 TimeStepChoice globalTimeStep(MPI_Comm comm, const TimeStepChoice& local) {
-  int rank = 0;
+  int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
-  struct {
-    double value;
-    int rank;
-  } mine{local.time_step, rank}, best{};
-  MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
-  // The winner's choice, as bytes (a trivially copyable struct).
+  MPI_Comm_size(comm, &size);
+  // Every rank's choice, as bytes (a trivially copyable struct); the buffer only grows.
   static_assert(std::is_trivially_copyable_v<TimeStepChoice>);
-  TimeStepChoice choice = local;
-  MPI_Bcast(&choice, sizeof choice, MPI_BYTE, best.rank, comm);
-  if (best.rank != rank) choice.point = -1;
+  static thread_local std::vector<TimeStepChoice> all;
+  all.resize(size);
+  MPI_Allgather(&local, sizeof local, MPI_BYTE, all.data(), sizeof local, MPI_BYTE, comm);
+  int best = 0;
+  for (int r = 1; r < size; ++r)
+    if (all[r].time_step < all[best].time_step) best = r;
+  TimeStepChoice choice = all[best];
+  if (best != rank) choice.point = -1;
   return choice;
 }
 

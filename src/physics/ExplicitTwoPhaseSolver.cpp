@@ -264,10 +264,7 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // and sums the kinetic energies, in the same pass over the points.
   kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
                                                 points_, grid_);
-  if (exchange_) {
-    sumMomentaAtSharedNodes(*exchange_, grid_);
-    sumOverRanks(ranks_->comm(), kinetic_);
-  }
+  if (exchange_) sumMomentaAtSharedNodes(*exchange_, grid_);  // (kinetic_: end of step)
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
@@ -291,7 +288,6 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
 void ExplicitTwoPhaseSolver::updatePointStates() {
   averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
   totals_ = argine::updatePointStates(table_, rates_, points_);
-  if (ranks_) sumOverRanks(ranks_->comm(), totals_);
   // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
   averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }
@@ -299,17 +295,33 @@ void ExplicitTwoPhaseSolver::updatePointStates() {
 void ExplicitTwoPhaseSolver::relocatePoints() {
   RelocationCounts counts =
       relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
-  if (ranks_) {  // points that entered another rank's element move there
-    const MigrationCounts moved = migratePoints(*ranks_, points_);
+  if (ranks_) {
+    // The step's sums over the ranks in one reduction (the stability check reads them)...
+    EndOfStepSums sums;
+    sums.kinetic_solid = kinetic_.solid;
+    sums.kinetic_liquid = kinetic_.liquid;
+    sums.non_finite_velocity = kinetic_.non_finite_points;
+    sums.liquid_mass = totals_.liquid_mass;
+    sums.non_finite_state = totals_.non_finite_points;
+    sums.lost = counts.lost;
+    sums.changed_element = counts.changed_element;
+    sums.emigrants = countEmigrants(*ranks_, points_);
+    sumOverRanks(ranks_->comm(), sums);
+    kinetic_.solid = sums.kinetic_solid;
+    kinetic_.liquid = sums.kinetic_liquid;
+    kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);
+    totals_.liquid_mass = sums.liquid_mass;
+    totals_.non_finite_points = static_cast<int>(sums.non_finite_state);
+    counts.lost = static_cast<int>(sums.lost);
+    counts.changed_element = static_cast<int>(sums.changed_element);
+    // ... then the points that entered another rank's element move there.
+    const MigrationCounts moved =
+        exchangePoints(*ranks_, points_, static_cast<long long>(sums.emigrants));
     migrated_points_ += moved.total;
     if (moved.sent > 0 || moved.received > 0) {
       relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
       time_step_.pointsReordered(points_);
     }
-    long long both[2] = {counts.lost, counts.changed_element};
-    MPI_Allreduce(MPI_IN_PLACE, both, 2, MPI_LONG_LONG, MPI_SUM, ranks_->comm());
-    counts.lost = static_cast<int>(both[0]);
-    counts.changed_element = static_cast<int>(both[1]);
   }
   diagnostics_.lost_points = counts.lost;
   // No point changed element (the common case): the active nodes stay nodes_in_use_.

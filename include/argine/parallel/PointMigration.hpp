@@ -30,6 +30,14 @@ int migratedValuesPerPoint(const MaterialPoints& points);
 /// points received. `points` is reallocated only when something moved on this rank.
 MigrationCounts migratePoints(const RankDecomposition& decomposition, MaterialPoints& points);
 
+/// Located points of this rank whose element another rank owns (local, no communication).
+int countEmigrants(const RankDecomposition& decomposition, const MaterialPoints& points);
+
+/// migratePoints when the caller already summed countEmigrants over the ranks (`total`, the
+/// same on every rank; nothing is communicated when it is 0). Collective.
+MigrationCounts exchangePoints(const RankDecomposition& decomposition, MaterialPoints& points,
+                               long long total);
+
 /// Keeps only the points whose element this rank owns (and, on rank 0, the points outside
 /// the mesh): the first distribution of points seeded identically on every rank. Local.
 void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& points);

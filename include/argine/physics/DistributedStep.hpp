@@ -7,8 +7,10 @@
 ///   after mapBoundaryGradients       sumBoundaryGradientsAtSharedNodes (5; hydraulic
 ///                                    conditions only)
 ///   after the momentum remap         sumMomentaAtSharedNodes (4)
-///   sums over points / nodes         Allreduce (energies, liquid mass, fluxes, counts)
-///   time step                        globalTimeStep (min over ranks)
+///   end of the step                  one Allreduce (EndOfStepSums: energies, liquid mass,
+///                                    invalid points, relocation and migration counts)
+///   boundary fluxes                  Allreduce (hydraulic conditions only)
+///   time step                        globalTimeStep (min over ranks, one Allgather)
 ///   after a point changed element    globalActiveElements (the free boundary)
 ///   relocation                       migratePoints (parallel/PointMigration.hpp)
 
@@ -36,16 +38,23 @@ void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& grid);
 /// volume).
 void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& fields);
 
-/// Sums of the point totals / kinetic totals over the ranks.
-void sumOverRanks(MPI_Comm comm, PointTotals& totals);
-void sumOverRanks(MPI_Comm comm, KineticTotals& totals);
+/// Everything the end of a step sums over the ranks, in ONE Allreduce: the point totals of
+/// the state update, the kinetic totals of the velocity update, and the relocation counts
+/// (lost points, points that changed element, points to migrate).
+struct EndOfStepSums {
+  Real kinetic_solid = 0, kinetic_liquid = 0, liquid_mass = 0;
+  Real non_finite_state = 0, non_finite_velocity = 0;
+  Real lost = 0, changed_element = 0, emigrants = 0;  // counts, exact in a double
+};
+void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums);
 /// Element-wise sum of `values` over the ranks (in place).
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);
 long long sumOverRanks(MPI_Comm comm, long long value);
 
-/// The smallest step over the ranks with the choice of the rank that gave it (its governing
-/// criterion, point id and position; `point` is an index on that rank only, -1 elsewhere).
-/// A rank without points passes a choice with time_step = infinity.
+/// The smallest step over the ranks (ties: the lowest rank) with the choice of the rank
+/// that gave it (its governing criterion, point id and position; `point` is an index on that
+/// rank only, -1 elsewhere), by one Allgather of the choices. A rank without points passes a
+/// choice with time_step = infinity.
 TimeStepChoice globalTimeStep(MPI_Comm comm, const TimeStepChoice& local);
 
 /// The elements holding at least one located point on ANY rank, ascending (collective).
