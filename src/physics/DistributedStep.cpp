@@ -29,9 +29,20 @@ void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradient
       {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
 }
 
-void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums) {
-  static_assert(sizeof(EndOfStepSums) == 8 * sizeof(Real));
-  MPI_Allreduce(MPI_IN_PLACE, &sums, 8, MPI_DOUBLE, MPI_SUM, comm);
+void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
+                  std::vector<Real>& scratch) {
+  Real* fixed[] = {&sums.kinetic_solid,       &sums.kinetic_liquid,
+                   &sums.liquid_mass,         &sums.non_finite_state,
+                   &sums.non_finite_velocity, &sums.lost,
+                   &sums.changed_element,     &sums.emigrants};
+  constexpr std::size_t kFixed = sizeof fixed / sizeof fixed[0];
+  const std::size_t n = kFixed + also.size();
+  if (scratch.size() < n) scratch.resize(n);
+  for (std::size_t k = 0; k < kFixed; ++k) scratch[k] = *fixed[k];
+  std::copy(also.begin(), also.end(), scratch.begin() + kFixed);
+  MPI_Allreduce(MPI_IN_PLACE, scratch.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
+  for (std::size_t k = 0; k < kFixed; ++k) *fixed[k] = scratch[k];
+  std::copy(scratch.begin() + kFixed, scratch.begin() + n, also.begin());
 }
 
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values) {

@@ -87,6 +87,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   hydraulic_ = HydraulicConditions(mesh_, stage);
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
   free_boundary_stale_ = true;
+  hydraulic_plan_current_ = false;
 
   const MaterialPoints pts = points_;
   if (stage.reset_displacements)
@@ -212,12 +213,32 @@ void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   else
     free_boundary_.detect(points_);
   free_boundary_stale_ = false;
+  hydraulic_plan_current_ = false;
+}
+
+bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
+  // The plan depends on the free boundary, gravity and the conditions' values at time_ only:
+  // with all three unchanged (constant heads and rain, between changes of the boundary) the
+  // last plan is the same plan, and rebuilding it (host maps, device copies) is skipped.
+  if (!hydraulic_plan_current_ || planned_gravity_ != gravity_) return false;
+  const auto& conditions = hydraulic_.conditions();
+  const auto& values = hydraulic_.currentValues();
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const Real value =
+        conditions[c].kind == BoundaryKind::SeepageFace ? 0 : conditions[c].series.at(time_);
+    if (value != values[c]) return false;
+  }
+  return true;
 }
 
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   if (hydraulic_.empty()) return;
   detectFreeBoundary();
-  hydraulic_.plan(time_, gravity_, free_boundary_);
+  if (!hydraulicPlanIsCurrent()) {
+    hydraulic_.plan(time_, gravity_, free_boundary_);
+    hydraulic_plan_current_ = true;
+    planned_gravity_ = gravity_;
+  }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
                        boundary_fields_);  // 4.51, n_L, flux weights at t^k
@@ -238,11 +259,12 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
 void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   if (hydraulic_.empty()) return;
   const int conditions = static_cast<int>(hydraulic_.conditions().size());
+  // Several ranks: each node counted on its owner; the sum over the ranks comes with the
+  // end-of-step reduction (relocatePoints).
   if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
-  std::vector<Real> masses =
+  const std::vector<Real> masses =
       boundaryFluxMasses(hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_,
                          boundary_fields_, grid_, dt);
-  if (ranks_) sumOverRanks(ranks_->comm(), masses);  // each node counted on its owner
   for (int c = 0; c <= conditions; ++c)
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
@@ -306,7 +328,7 @@ void ExplicitTwoPhaseSolver::relocatePoints() {
     sums.lost = counts.lost;
     sums.changed_element = counts.changed_element;
     sums.emigrants = countEmigrants(*ranks_, points_);
-    sumOverRanks(ranks_->comm(), sums);
+    sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, reduction_scratch_);
     kinetic_.solid = sums.kinetic_solid;
     kinetic_.liquid = sums.kinetic_liquid;
     kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -204,6 +205,17 @@ bool runProblem(const Problem& problem, int warmup, int repeat) {
   return std::isfinite(rate_one) && rate_one > 0 && std::isfinite(rate_all) && rate_all > 0;
 }
 
+/// Mean time of one Allreduce of 8 doubles over MPI_COMM_WORLD (s): the latency each of a
+/// step's synchronisations pays at least (on a loaded machine: until both ranks run again).
+double allreduceLatency(int repeats) {
+  Real values[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  MPI_Barrier(MPI_COMM_WORLD);
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < repeats; ++k)
+    MPI_Allreduce(MPI_IN_PLACE, values, 8, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / repeats;
+}
+
 int run(int argc, char** argv) {
   const verification::CommandLine options(argc, argv, {"scenes", "steps", "warmup", "repeat"});
   const int warmup = static_cast<int>(options.number("warmup", 5));
@@ -213,6 +225,17 @@ int run(int argc, char** argv) {
     scenes.clear();
     std::stringstream list(options.text("scenes", ""));
     for (std::string word; std::getline(list, word, ',');) scenes.push_back(word);
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const double latency = allreduceLatency(2000);
+  if (rank == 0) {
+    std::ifstream in("/proc/loadavg");
+    std::string load;
+    std::getline(in, load);
+    std::printf("%d ranks; Allreduce of 8 doubles: %.1f us; load average %s\n\n", size,
+                1e6 * latency, load.c_str());
   }
   bool ok = true;
   for (const auto& name : scenes) {

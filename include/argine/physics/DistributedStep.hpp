@@ -9,7 +9,6 @@
 ///   after the momentum remap         sumMomentaAtSharedNodes (4)
 ///   end of the step                  one Allreduce (EndOfStepSums: energies, liquid mass,
 ///                                    invalid points, relocation and migration counts)
-///   boundary fluxes                  Allreduce (hydraulic conditions only)
 ///   time step                        globalTimeStep (min over ranks, one Allgather)
 ///   after a point changed element    globalActiveElements (the free boundary)
 ///   relocation                       migratePoints (parallel/PointMigration.hpp)
@@ -46,7 +45,10 @@ struct EndOfStepSums {
   Real non_finite_state = 0, non_finite_velocity = 0;
   Real lost = 0, changed_element = 0, emigrants = 0;  // counts, exact in a double
 };
-void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums);
+/// Sums `sums` and `also` (e.g. the liquid volume through each hydraulic condition) over
+/// the ranks in one Allreduce, through `scratch` (grown, never shrunk: no allocation per step).
+void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
+                  std::vector<Real>& scratch);
 /// Element-wise sum of `values` over the ranks (in place).
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);
 long long sumOverRanks(MPI_Comm comm, long long value);

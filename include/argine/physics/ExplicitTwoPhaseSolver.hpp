@@ -207,6 +207,7 @@ class ExplicitTwoPhaseSolver {
   void mapMassesMomentaAndForces();
   void applyHydraulicLoads();
   void detectFreeBoundary();
+  bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum();
   void solveMixtureMomentum();
   void applyAccelerationBoundaryConditions();
@@ -235,7 +236,9 @@ class ExplicitTwoPhaseSolver {
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
-  bool free_boundary_stale_ = true;  ///< a point changed element since the last detection
+  bool free_boundary_stale_ = true;      ///< a point changed element since the last detection
+  bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
+  Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
   VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
@@ -260,8 +263,9 @@ class ExplicitTwoPhaseSolver {
   Kokkos::View<const int*, MemSpace> alwaysActiveNodes() const;  ///< shared nodes, or none
   const RankDecomposition* ranks_ = nullptr;
   std::unique_ptr<NodalExchange> exchange_;
-  ActiveNodes nodes_owned_;       ///< active nodes this rank owns (sums over nodes)
-  TimeStepChoice global_choice_;  ///< the last step chosen over all ranks
+  ActiveNodes nodes_owned_;              ///< active nodes this rank owns (sums over nodes)
+  TimeStepChoice global_choice_;         ///< the last step chosen over all ranks
+  std::vector<Real> reduction_scratch_;  ///< the end-of-step Allreduce buffer
   long long migrated_points_ = 0;
 };
 
