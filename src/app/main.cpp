@@ -24,8 +24,11 @@ namespace {
 constexpr const char* kUsage = R"(usage: argine <command> [options]
 
 commands:
-  run DECK.yaml [--output DIR] [--quiet]   run every stage of a deck; results go to DIR
-                                           (default: the deck's Output/Directory)
+  run DECK.yaml [--output DIR] [--quiet] [--restart CHECKPOINT]
+                                           run every stage of a deck; results go to DIR
+                                           (default: the deck's Output/Directory);
+                                           --restart continues from a checkpoint written
+                                           by a run of the same deck (Output/Checkpoint)
   check DECK.yaml                          validate the deck and its mesh, run nothing
   mesh DECK.yaml -o MESH.exo               write the mesh of the deck's Mesh/Generate section
   schema                                   print the deck reference (Markdown)
@@ -41,6 +44,7 @@ struct Arguments {
   std::vector<std::string> positional;
   std::string output;
   std::string mesh_output;
+  std::string restart;
   bool quiet = false;
 };
 
@@ -56,6 +60,8 @@ Arguments parseArguments(int argc, char** argv, int first) {
       arguments.output = value("--output");
     } else if (word == "-o") {
       arguments.mesh_output = value("-o");
+    } else if (word == "--restart") {
+      arguments.restart = value("--restart");
     } else if (word == "--quiet") {
       arguments.quiet = true;
     } else if (!word.empty() && word[0] == '-') {
@@ -103,6 +109,7 @@ int runCommand(const std::string& command, const Arguments& arguments) {
     argine::RunOptions options;
     options.output_directory = arguments.output.empty() ? deck.output.directory : arguments.output;
     options.quiet = arguments.quiet;
+    options.restart = arguments.restart;
     argine::Simulation simulation(deck, options);
     simulation.run();
     return argine::kExitOk;

@@ -565,12 +565,33 @@ ListSchema stageKeys() {
 
 // ---------------------------------------------------------------- Output and the deck
 
+// ---- issue P8: checkpoints (doc/checkpoints.md) ----
+
+ListSchema checkpointKeys() {
+  ListSchema checkpoint;
+  checkpoint.add(KeySpec::integer("Every Steps",
+                                  "write `<Name>.checkpoint` in the output directory after every "
+                                  "this many time steps (counted over all stages); 0: never")
+                     .atLeast(0)
+                     .byDefault(0LL));
+  checkpoint.add(KeySpec::real("Wall Interval (min)", "min",
+                               "write it when this much wall time has passed since the run (or "
+                               "restart) began or the last checkpoint; 0: never")
+                     .atLeast(0)
+                     .byDefault(0.0));
+  return checkpoint;
+}
+
+// ---- end of issue P8 deck keys ----
+
 ListSchema outputKeys() {
   ListSchema output;
   output.add(KeySpec::text("Directory", "results directory (relative to the working directory)")
                  .byDefault(std::string("results")));
   output.add(KeySpec::text("Name", "file stem: `<Name>_grid.e`, `<Name>_points.e`")
                  .byDefault(std::string("argine")));
+  output.add(KeySpec::sublist("Checkpoint", checkpointKeys(),
+                              "restart files, continued by `argine run DECK --restart FILE` (P8)"));
   return output;
 }
 

@@ -378,6 +378,9 @@ OutputSpec parseOutput(const DeckSection& output) {
   OutputSpec spec;
   spec.directory = output.text("Directory");
   spec.name = output.text("Name");
+  const DeckSection checkpoint = output.section("Checkpoint");  // issue P8
+  spec.checkpoint.every_steps = checkpoint.integer("Every Steps");
+  spec.checkpoint.wall_interval = 60.0 * checkpoint.real("Wall Interval (min)");  // min -> s
   return spec;
 }
 

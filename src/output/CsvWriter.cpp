@@ -1,7 +1,9 @@
 #include "argine/output/CsvWriter.hpp"
 
 #include <charconv>
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include "argine/core/Error.hpp"
 
@@ -18,6 +20,13 @@ std::string csvField(const std::string& text) {
   }
   return quoted + "\"";
 }
+
+std::string headerLine(const std::vector<std::string>& columns) {
+  std::string line;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    line += (c > 0 ? "," : "") + csvField(columns[c]);
+  return line + '\n';
+}
 }  // namespace
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns)
@@ -25,9 +34,40 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& co
   if (columns_.empty()) throw std::invalid_argument(path + ": a CSV file needs columns");
   out_.open(path, std::ios::out | std::ios::trunc);
   if (!out_) throw InputError(path, "cannot open the CSV file for writing");
-  for (std::size_t c = 0; c < columns_.size(); ++c)
-    out_ << (c > 0 ? "," : "") << csvField(columns_[c]);
-  out_ << '\n' << std::flush;
+  const std::string header = headerLine(columns_);
+  out_ << header << std::flush;
+  bytes_ = header.size();
+}
+
+CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns,
+                     CsvResume resume)
+    : path_(path), columns_(columns) {
+  if (columns_.empty()) throw std::invalid_argument(path + ": a CSV file needs columns");
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error)
+    throw InputError(
+        path, "cannot continue the CSV file of the checkpointed run (" + error.message() + ")");
+  if (size < resume.bytes)
+    throw InputError(path, "holds " + std::to_string(size) + " bytes, fewer than the " +
+                               std::to_string(resume.bytes) +
+                               " the checkpoint recorded: not the checkpointed run's file");
+  const std::string header = headerLine(columns_);
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::string first(header.size(), '\0');
+    in.read(first.data(), static_cast<std::streamsize>(first.size()));
+    if (resume.bytes < header.size() || first != header)
+      throw InputError(path,
+                       "its header is not the one this run writes: not the checkpointed "
+                       "run's file");
+  }
+  fs::resize_file(path, resume.bytes, error);
+  if (error) throw InputError(path, "cannot truncate the CSV file (" + error.message() + ")");
+  out_.open(path, std::ios::out | std::ios::app);
+  if (!out_) throw InputError(path, "cannot open the CSV file for appending");
+  bytes_ = resume.bytes;
 }
 
 void CsvWriter::writeRow(const std::vector<Real>& values) {
@@ -44,6 +84,7 @@ void CsvWriter::writeRow(const std::vector<Real>& values) {
   row += '\n';
   out_ << row << std::flush;
   if (!out_) throw RunError(path_ + ": writing a CSV row failed");
+  bytes_ += row.size();
 }
 
 }  // namespace argine

@@ -68,6 +68,23 @@ ExodusFile::ExodusFile(const std::string& path, const std::function<void(int exo
   checkExodus(exoid_, path, "ex_open");
 }
 
+ExodusFile::ExodusFile(const std::string& path, ExodusResume resume) : path_(path) {
+  int cpu_word_size = sizeof(Real);
+  int io_word_size = 0;
+  float version = 0.0f;
+  exoid_ = ex_open(path.c_str(), EX_WRITE, &cpu_word_size, &io_word_size, &version);
+  if (exoid_ < 0) throw InputError(path, "cannot reopen the results file of the checkpointed run");
+  const int stored = static_cast<int>(ex_inquire_int(exoid_, EX_INQ_TIME));
+  if (stored < resume.steps) {
+    ex_close(exoid_);
+    exoid_ = -1;
+    throw InputError(path, "holds " + std::to_string(stored) + " time steps, fewer than the " +
+                               std::to_string(resume.steps) +
+                               " the checkpoint recorded: not the checkpointed run's file");
+  }
+  steps_ = resume.steps;
+}
+
 ExodusFile::~ExodusFile() {
   if (exoid_ >= 0) ex_close(exoid_);
 }

@@ -3,6 +3,9 @@
 #include <set>
 #include <stdexcept>
 
+#include <exodusII.h>
+
+#include "argine/core/Error.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
 
 namespace argine {
@@ -27,6 +30,15 @@ GridFile::GridFile(const std::string& path, const Mesh& mesh,
         putMeshGeometry(exoid, mesh, "argine background mesh");
         defineNodalVariables(exoid, path, field_names_);
       }) {}
+
+GridFile::GridFile(const std::string& path, const Mesh& mesh,
+                   const std::vector<std::string>& field_names, ExodusResume resume)
+    : field_names_(checkedNames(field_names)), num_nodes_(mesh.numNodes()), file_(path, resume) {
+  const auto nodes = ex_inquire_int(file_.id(), EX_INQ_NODES);
+  if (nodes != num_nodes_)
+    throw InputError(path, "has " + std::to_string(nodes) + " nodes, the mesh " +
+                               std::to_string(num_nodes_) + ": not the checkpointed run's file");
+}
 
 void GridFile::write(Real time, const std::vector<NodalField>& fields) {
   // Match the given fields to the declared variables before touching the file.

@@ -106,6 +106,29 @@ PointsFile::PointsFile(const std::string& path, const std::vector<std::string>& 
   });
 }
 
+PointsFile::PointsFile(const std::string& path, ExodusResume resume)
+    : file_(std::make_unique<ExodusFile>(path, resume)) {
+  const int exoid = file_->id();
+  const int n = static_cast<int>(ex_inquire_int(exoid, EX_INQ_NODES));
+  reference_x_.resize(n);
+  reference_y_.resize(n);
+  if (n == 0) return;
+  std::vector<int> node_numbers(n);
+  if (ex_get_coord(exoid, reference_x_.data(), reference_y_.data(), nullptr) < 0 ||
+      ex_get_id_map(exoid, EX_NODE_MAP, node_numbers.data()) < 0)
+    throw InputError(path, "cannot read the points (coordinates, id map) back");
+  int max_id = -1;
+  for (const int number : node_numbers) max_id = std::max(max_id, number - 1);
+  node_of_id_.assign(max_id + 1, -1);
+  for (int node = 0; node < n; ++node) {
+    const int id = node_numbers[node] - 1;
+    if (id < 0 || node_of_id_[id] != -1)
+      throw InputError(path,
+                       "its node id map is not a points file's (id " + std::to_string(id) + ")");
+    node_of_id_[id] = node;
+  }
+}
+
 bool PointsFile::holds(const MaterialPoints& points) const {
   if (points.count != numPoints()) return false;
   auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.id);

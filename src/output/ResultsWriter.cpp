@@ -14,7 +14,9 @@ namespace {
 
 // Makes the output directory; returns it so it can run in the member initialiser list
 // before the files are made.
-const std::string& preparedDirectory(const std::string& directory, const std::string& stem) {
+// Returns `directory` after removing the files <stem>_points.e-sNNNN with NNNN > keep.
+const std::string& preparedDirectory(const std::string& directory, const std::string& stem,
+                                     int keep = 1) {
   std::error_code error;
   fs::create_directories(directory, error);
   if (error)
@@ -29,7 +31,8 @@ const std::string& preparedDirectory(const std::string& directory, const std::st
     const std::string name = entry.path().filename().string();
     const bool stale = name.size() == prefix.size() + 4 &&
                        name.compare(0, prefix.size(), prefix) == 0 &&
-                       name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+                       name.find_first_not_of("0123456789", prefix.size()) == std::string::npos &&
+                       std::stoi(name.substr(prefix.size())) > keep;
     if (stale) {
       std::error_code ignored;
       fs::remove(entry.path(), ignored);
@@ -65,6 +68,24 @@ ResultsWriter::ResultsWriter(const std::string& directory, const std::string& st
       grid_(gridFilePath(directory, stem), mesh, nodal_field_names),
       points_(std::make_unique<PointsFile>(pointsSeriesPath(directory, stem, 1), material_names,
                                            points)) {}
+
+ResultsWriter::ResultsWriter(const std::string& directory, const std::string& stem,
+                             const Mesh& mesh, const std::vector<std::string>& material_names,
+                             const std::vector<std::string>& nodal_field_names,
+                             const ResultsResume& resume)
+    : directory_(preparedDirectory(directory, stem, resume.points_file_count)),
+      stem_(stem),
+      material_names_(material_names),
+      grid_(gridFilePath(directory, stem), mesh, nodal_field_names,
+            ExodusResume{resume.grid_steps}),
+      points_(
+          std::make_unique<PointsFile>(pointsSeriesPath(directory, stem, resume.points_file_count),
+                                       ExodusResume{resume.points_steps})),
+      points_file_count_(resume.points_file_count) {}
+
+ResultsResume ResultsWriter::resumePoint() const {
+  return ResultsResume{grid_.steps(), points_file_count_, points_->steps()};
+}
 
 void ResultsWriter::write(Real time, const MaterialPoints& points,
                           const std::vector<NodalField>& nodal) {

@@ -110,8 +110,18 @@ SegmentDistance segmentDistance(const std::array<Real, 2>& from, const std::arra
 }
 
 ProbeWriter::ProbeWriter(const ProbesSpec& spec, const std::string& directory,
-                         const std::string& stem, const MaterialPoints& points)
+                         const std::string& stem, const MaterialPoints& points,
+                         const std::vector<std::uintmax_t>& resume_bytes)
     : spec_(spec) {
+  const std::size_t files = spec_.points.size() + spec_.sections.size();
+  if (!resume_bytes.empty() && resume_bytes.size() != files)
+    throw InputError("Probes", "the checkpoint records " + std::to_string(resume_bytes.size()) +
+                                   " probe files, the deck makes " + std::to_string(files));
+  auto open = [&](const std::string& path, const std::vector<std::string>& columns) {
+    const std::size_t k = point_files_.size() + section_files_.size();
+    if (resume_bytes.empty()) return std::make_unique<CsvWriter>(path, columns);
+    return std::make_unique<CsvWriter>(path, columns, CsvResume{resume_bytes[k]});
+  };
   const ProbeSnapshot snapshot(points);
   for (const PointProbeSpec& probe : spec_.points) {
     const int p = nearestPoint(snapshot, probe.position);
@@ -126,8 +136,8 @@ ProbeWriter::ProbeWriter(const ProbesSpec& spec, const std::string& directory,
                                   std::to_string(distance) + " m away, beyond Tolerance (m) " +
                                   std::to_string(probe.tolerance));
     point_ids_.push_back(snapshot.id[p]);
-    point_files_.push_back(std::make_unique<CsvWriter>(
-        directory + "/" + stem + "_probe_" + probe.name + ".csv", kPointColumns));
+    point_files_.push_back(
+        open(directory + "/" + stem + "_probe_" + probe.name + ".csv", kPointColumns));
   }
   for (const SectionProbeSpec& section : spec_.sections) {
     std::vector<std::string> columns;
@@ -137,8 +147,8 @@ ProbeWriter::ProbeWriter(const ProbesSpec& spec, const std::string& directory,
     } else {
       columns = {"time", "sample", "distance", "x", "y", "liquid_pressure", "saturation", "points"};
     }
-    section_files_.push_back(std::make_unique<CsvWriter>(
-        directory + "/" + stem + "_section_" + section.name + ".csv", columns));
+    section_files_.push_back(
+        open(directory + "/" + stem + "_section_" + section.name + ".csv", columns));
   }
 }
 
@@ -149,6 +159,13 @@ std::vector<std::string> ProbeWriter::paths() const {
   for (const auto& f : point_files_) all.push_back(f->path());
   for (const auto& f : section_files_) all.push_back(f->path());
   return all;
+}
+
+std::vector<std::uintmax_t> ProbeWriter::fileBytes() const {
+  std::vector<std::uintmax_t> bytes;
+  for (const auto& f : point_files_) bytes.push_back(f->bytes());
+  for (const auto& f : section_files_) bytes.push_back(f->bytes());
+  return bytes;
 }
 
 void ProbeWriter::write(Real time, const MaterialPoints& points) {

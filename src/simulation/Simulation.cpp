@@ -18,6 +18,7 @@
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/probes/ProbeWriter.hpp"
 #include "argine/seepage/ImplicitSeepageSolver.hpp"
+#include "argine/simulation/Checkpoint.hpp"
 #include "argine/simulation/MaterialChanges.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/Setup.hpp"
@@ -75,6 +76,7 @@ std::string Simulation::pointsPath() const {
 }
 
 RunSummary Simulation::run() {
+  readRestartCheckpoint();  // (P8) --restart: a bad checkpoint is rejected before any output
   ProgressOptions progress_options;
   progress_options.quiet = options_.quiet;
   progress_ =
@@ -82,20 +84,40 @@ RunSummary Simulation::run() {
 
   std::vector<std::string> nodal_names;
   for (const auto& field : solver_->nodalFields()) nodal_names.push_back(field.name);
-  results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
-                                             materialNames(deck_), nodal_names, points_);
-  diagnostics_ = std::make_unique<CsvWriter>(
-      options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv",
-      std::vector<std::string>{"time", "time_step", "kinetic_energy_solid", "kinetic_energy_liquid",
-                               "liquid_mass", "lost_points"});
+  // (P8) A restart continues the checkpointed run's files where the checkpoint left them.
+  if (resume_)
+    results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
+                                               materialNames(deck_), nodal_names, resume_->results);
+  else
+    results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
+                                               materialNames(deck_), nodal_names, points_);
+  const std::string diagnostics_path =
+      options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv";
+  const std::vector<std::string> diagnostics_columns{
+      "time",        "time_step",  "kinetic_energy_solid", "kinetic_energy_liquid",
+      "liquid_mass", "lost_points"};
+  if (resume_)
+    diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns,
+                                               CsvResume{resume_->diagnostics_bytes});
+  else
+    diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns);
   openBoundaryFluxLog();
   if (!deck_.probes.empty())
-    probes_ = std::make_unique<ProbeWriter>(deck_.probes, options_.output_directory,
-                                            deck_.output.name, points_);
+    probes_ = std::make_unique<ProbeWriter>(
+        deck_.probes, options_.output_directory, deck_.output.name, points_,
+        resume_
+            ? std::vector<std::uintmax_t>(resume_->probe_bytes.begin(), resume_->probe_bytes.end())
+            : std::vector<std::uintmax_t>{});
   if (!options_.quiet && !stage_log_.empty()) std::printf("argine: %s\n", stage_log_[0].c_str());
+  restoreFromCheckpoint();  // (P8) no-op without --restart
 
   const double wall_start = wallSeconds();
-  for (const auto& stage : deck_.stages) runStage(stage);
+  last_checkpoint_wall_ = wall_start;
+  for (stage_index_ = resume_ ? static_cast<std::size_t>(resume_->stage_index) : 0;
+       stage_index_ < deck_.stages.size(); ++stage_index_) {
+    runStage(deck_.stages[stage_index_]);
+    checkpointIfDue(false);  // (P8) at the stage boundary: "before the next stage"
+  }
   summary_.wall_seconds = wallSeconds() - wall_start;
   summary_.end_time = solver_->time();
   summary_.output_steps = results_->steps();
@@ -110,26 +132,38 @@ RunSummary Simulation::run() {
                 solver_->profile().describe("argine:   ").c_str());
     std::printf("argine: results in %s and %s\n", results_->gridPath().c_str(),
                 results_->pointsPath().c_str());
+    if (summary_.checkpoints > 0)  // (P8)
+      std::printf("argine: %d checkpoint(s) in %s, last %.3g MB, %.3g s in all\n",
+                  summary_.checkpoints,
+                  checkpointPath(options_.output_directory, deck_.output.name).c_str(),
+                  summary_.checkpoint_bytes / 1e6, summary_.checkpoint_seconds);
   }
   return summary_;
 }
 
 void Simulation::runStage(const StageSpec& stage) {
   if (stage.solver == SolverKind::ImplicitSeepage) return runImplicitSeepageStage(stage);
-  applyStageMaterialChanges(stage);  // (P4) before beginStage: its energy scale sees them
-  solver_->beginStage(stage);
-  if (!initial_output_written_) writeInitialOutput();
+  const bool resumed = resume_pending_;  // (P8) restart inside this stage: its start is done
+  if (!resumed) {
+    applyStageMaterialChanges(stage);  // (P4) before beginStage: its energy scale sees them
+    solver_->beginStage(stage);
+    if (!initial_output_written_) writeInitialOutput();
+  }
   std::unique_ptr<RelaxationMonitor> relaxation;
   std::unique_ptr<MaterialTable> relaxation_table;
   if (stage.relaxation.enabled) {
     relaxation = std::make_unique<RelaxationMonitor>(stage.relaxation, solver_->time());
     relaxation_table = std::make_unique<MaterialTable>(deck_.materials);
   }
-  const Real start = solver_->time();
-  const Real end = start + stage.duration;
   // Output times are start + k * interval; the step is shortened to land on them exactly.
   const Real interval = stage.output_interval > 0 ? stage.output_interval : stage.duration;
-  Real next_output = start + interval;
+  if (!resumeStage(relaxation.get())) {  // (P8) else start and next output from the checkpoint
+    stage_start_ = solver_->time();
+    next_output_ = stage_start_ + interval;
+  }
+  relaxation_ = relaxation.get();
+  const Real start = stage_start_;
+  const Real end = start + stage.duration;
   // Times within this tolerance of a target count as reaching it (round-off of sums of dt).
   const Real tolerance = 1e-9 * std::max<Real>(stage.duration, 1e-30);
 
@@ -141,17 +175,17 @@ void Simulation::runStage(const StageSpec& stage) {
     if (first_step && !options_.quiet) logTimeStep(stage, choice);
     first_step = false;
     dt = choice.time_step;
-    dt = std::min(dt, std::min(next_output, end) - solver_->time());
+    dt = std::min(dt, std::min(next_output_, end) - solver_->time());
     solver_->step(dt);
     accumulateBoundaryFluxes();
     ++summary_.steps;
     summary_.point_updates += points_.count;
     bool written = false;
-    if (solver_->time() >= next_output - tolerance) {
+    if (solver_->time() >= next_output_ - tolerance) {
       writeOutput();
       written = true;
-      next_output = std::min(end, next_output + interval);
-      if (next_output <= solver_->time() + tolerance) next_output = end;
+      next_output_ = std::min(end, next_output_ + interval);
+      if (next_output_ <= solver_->time() + tolerance) next_output_ = end;
     } else if (probes_ && probes_->interval() > 0 &&
                solver_->time() >= next_probe_time_ - tolerance) {
       writeProbes();
@@ -174,7 +208,9 @@ void Simulation::runStage(const StageSpec& stage) {
         break;
       }
     }
+    checkpointIfDue(true);  // (P8)
   }
+  relaxation_ = nullptr;
   if (relaxation && !relaxation->relaxed()) {
     char line[256];
     std::snprintf(line, sizeof line,
@@ -338,8 +374,13 @@ void Simulation::openBoundaryFluxLog() {
     columns.push_back(name + "_step");
     columns.push_back(name + "_cumulative");
   }
-  boundary_flux_ = std::make_unique<CsvWriter>(
-      options_.output_directory + "/" + deck_.output.name + "_boundary_flux.csv", columns);
+  const std::string path =
+      options_.output_directory + "/" + deck_.output.name + "_boundary_flux.csv";
+  if (resume_)  // (P8) continue the checkpointed run's file
+    boundary_flux_ =
+        std::make_unique<CsvWriter>(path, columns, CsvResume{resume_->boundary_flux_bytes});
+  else
+    boundary_flux_ = std::make_unique<CsvWriter>(path, columns);
 }
 
 void Simulation::accumulateBoundaryFluxes() {

@@ -276,9 +276,17 @@ struct ProbesSpec {
 
 // ---------------------------------------------------------------- whole deck
 
+/// Output/Checkpoint (P8): when to write `<directory>/<name>.checkpoint`.
+struct CheckpointSpec {
+  long long every_steps = 0;  ///< after every this many steps over all stages; 0: never
+  Real wall_interval = 0;     ///< (s) of wall time since the last one; 0: never
+  bool enabled() const { return every_steps > 0 || wall_interval > 0; }
+};
+
 struct OutputSpec {
   std::string directory = "results";  ///< relative to the working directory
   std::string name = "argine";        ///< file stem: <name>_grid.e, <name>_points.e
+  CheckpointSpec checkpoint;          ///< (P8)
 };
 
 struct Deck {

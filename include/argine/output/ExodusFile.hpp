@@ -21,6 +21,13 @@ void checkExodus(int status, const std::string& path, const char* call);
 void defineNodalVariables(int exoid, const std::string& path,
                           const std::vector<std::string>& names);
 
+/// Where a restarted run continues a results file: after its first `steps` time steps (what
+/// a checkpoint recorded); the next step written is steps + 1, overwriting any step a killed
+/// run wrote after the checkpoint (the restarted run writes the same steps again).
+struct ExodusResume {
+  int steps = 0;
+};
+
 /// One open Exodus II results file; closed by the destructor.
 class ExodusFile {
  public:
@@ -28,6 +35,9 @@ class ExodusFile {
   /// writes the fixed part (init, coordinates, blocks, variable names) into `path`.part,
   /// which is then closed, renamed to `path` and reopened for appending time steps.
   ExodusFile(const std::string& path, const std::function<void(int exoid)>& define);
+  /// Reopens `path`, written by the checkpointed run, for appending after `resume.steps`
+  /// steps. Throws InputError naming the file when it cannot be opened or holds fewer steps.
+  ExodusFile(const std::string& path, ExodusResume resume);
   ~ExodusFile();
   ExodusFile(const ExodusFile&) = delete;
   ExodusFile& operator=(const ExodusFile&) = delete;
@@ -35,6 +45,8 @@ class ExodusFile {
   const std::string& path() const { return path_; }
   /// Number of time steps written so far.
   int steps() const { return steps_; }
+  /// The exodus id of the open file (for reading back its fixed part).
+  int id() const { return exoid_; }
 
   /// Starts time step steps()+1 at `time` (ex_put_time); returns its 1-based number.
   int beginStep(Real time);

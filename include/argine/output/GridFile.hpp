@@ -23,6 +23,11 @@ class GridFile {
   /// Throws std::invalid_argument for an empty or repeated field name.
   GridFile(const std::string& path, const Mesh& mesh, const std::vector<std::string>& field_names);
 
+  /// Reopens the grid file of a checkpointed run (ExodusResume); InputError naming the file
+  /// when its node count is not the mesh's.
+  GridFile(const std::string& path, const Mesh& mesh, const std::vector<std::string>& field_names,
+           ExodusResume resume);
+
   /// Appends a time step. `fields` must hold each declared name once (any order), each with
   /// one value per mesh node; throws std::invalid_argument otherwise.
   void write(Real time, const std::vector<NodalField>& fields);

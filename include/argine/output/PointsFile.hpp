@@ -29,6 +29,10 @@ class PointsFile {
   PointsFile(const std::string& path, const std::vector<std::string>& material_names,
              const MaterialPoints& points);
 
+  /// Reopens a points file of a checkpointed run (ExodusResume): its nodes, ids and reference
+  /// coordinates are read back from the file.
+  PointsFile(const std::string& path, ExodusResume resume);
+
   /// True when `points` are exactly this file's points: same count, every id a file node.
   bool holds(const MaterialPoints& points) const;
 

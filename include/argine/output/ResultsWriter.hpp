@@ -17,6 +17,13 @@
 
 namespace argine {
 
+/// Where a restarted run continues the results (recorded by a checkpoint).
+struct ResultsResume {
+  int grid_steps = 0;         ///< time steps in the grid file
+  int points_file_count = 1;  ///< files of the points series
+  int points_steps = 0;       ///< time steps in the last of them
+};
+
 class ResultsWriter {
  public:
   /// Creates `directory` if missing (InputError naming it if that fails), removes stale
@@ -26,6 +33,16 @@ class ResultsWriter {
   ResultsWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
                 const std::vector<std::string>& material_names,
                 const std::vector<std::string>& nodal_field_names, const MaterialPoints& points);
+
+  /// Continues the files of a checkpointed run (restart): reopens the grid file and the last
+  /// points file after the recorded steps (ExodusResume) and removes later files of the
+  /// points series a killed run may have started. InputError naming a file that does not fit.
+  ResultsWriter(const std::string& directory, const std::string& stem, const Mesh& mesh,
+                const std::vector<std::string>& material_names,
+                const std::vector<std::string>& nodal_field_names, const ResultsResume& resume);
+
+  /// Where the files stand now, for a checkpoint.
+  ResultsResume resumePoint() const;
 
   /// Writes one time step to both files. When the set of points changed (points removed or
   /// added), first starts the next points file of the series.

@@ -202,6 +202,24 @@ class ExplicitTwoPhaseSolver {
   /// Clears profile() (e.g. after warm-up steps).
   void resetProfile() { profile_.reset(); }
 
+  // ---- checkpoint / restart (simulation/Checkpoint.hpp; ExplicitSolverResume.cpp)
+  /// What the solver carries from step to step besides the points and what beginStage()
+  /// derives from the deck: the rest (shape functions, active nodes, free boundary, grid) is
+  /// a function of the points and is derived again by resume().
+  struct ResumeState {
+    Real time = 0;
+    StepDiagnostics diagnostics;  ///< its step count drives the sort interval
+    Real energy_scale = 0;        ///< of the stage, from the points at its start
+    bool stage_started = false;   ///< false: checkpoint at a stage boundary
+    TimeStepControl::State time_step;
+  };
+  ResumeState resumeState() const;
+  /// Continues from `state` once the points hold the checkpoint's values (same count and
+  /// order) and, when state.stage_started, beginStage() ran for the checkpoint's stage. Gives
+  /// the points the shape functions, active nodes and free boundary the uninterrupted run
+  /// holds (relocation from unchanged positions is exact, see relocateAndEvaluateShapes).
+  void resume(const ResumeState& state);
+
  private:
   // The steps of Sec. 3.3, in order.
   void mapMassesMomentaAndForces();

@@ -58,6 +58,21 @@ class TimeStepControl {
   /// The last choice.
   const TimeStepChoice& last() const { return choice_; }
 
+  /// What next() carries from one call to the next (checkpoints, simulation/Checkpoint.hpp):
+  /// with update_interval > 1 the cached choice is reused, so a restart must restore it.
+  struct State {
+    bool stale = true;
+    int calls_since_update = 0;
+    TimeStepChoice choice;
+  };
+  State state() const { return State{stale_, calls_since_update_, choice_}; }
+  /// Restores state() after configure() with the same stage settings.
+  void restore(const State& state) {
+    stale_ = state.stale;
+    calls_since_update_ = state.calls_since_update;
+    choice_ = state.choice;
+  }
+
  private:
   Kokkos::View<Real*, MemSpace> element_size_;
   Kokkos::View<CriterionKind*, MemSpace> criteria_;

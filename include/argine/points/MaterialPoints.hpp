@@ -5,6 +5,9 @@
 /// Sign conventions (stated once, see doc/theory.md): stresses and strains are positive
 /// in tension; liquid pressure p_L is positive in compression (water pressure below the
 /// water table is positive); suction s = -p_L where p_L < 0 (gas pressure is zero).
+///
+/// A new field must also be added to forEachPointField (src/checkpoint/CheckpointPoints.cpp),
+/// so that checkpoints hold it, and kCheckpointFormatVersion incremented (doc/checkpoints.md).
 
 #include <string>
 

@@ -15,6 +15,7 @@
 /// The point probe picks, at construction, the point nearest to its Position; InputError
 /// ("Probes/Points/<name>/Position (m)") when none lies within Tolerance.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,8 +52,10 @@ class ProbeWriter {
  public:
   /// Resolves the point probes on `points` (their current positions are the initial ones)
   /// and creates the files.
+  /// `resume_bytes` (restart): one size per file in paths() order; the files of the
+  /// checkpointed run are continued after that many bytes (CsvWriter CsvResume).
   ProbeWriter(const ProbesSpec& spec, const std::string& directory, const std::string& stem,
-              const MaterialPoints& points);
+              const MaterialPoints& points, const std::vector<std::uintmax_t>& resume_bytes = {});
   ~ProbeWriter();
 
   /// Appends one row per probe (a band section: one per point in the band) at `time`.
@@ -62,6 +65,8 @@ class ProbeWriter {
   const std::vector<int>& pointIds() const { return point_ids_; }
   /// Paths of all files, point probes first.
   std::vector<std::string> paths() const;
+  /// Bytes written to each file so far, in paths() order (for checkpoints).
+  std::vector<std::uintmax_t> fileBytes() const;
   /// Probe interval (s); 0: at every output.
   Real interval() const { return spec_.interval; }
 

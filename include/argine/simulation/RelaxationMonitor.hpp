@@ -16,6 +16,7 @@
 
 #include <deque>
 #include <utility>
+#include <vector>
 
 #include "argine/input/Deck.hpp"
 
@@ -37,6 +38,25 @@ class RelaxationMonitor {
   Real peak() const { return peak_; }
   long steps() const { return steps_; }
   bool relaxed() const { return relaxed_; }
+
+  /// Everything add() carries between calls, for checkpoints (simulation/Checkpoint.hpp).
+  struct State {
+    Real start = 0, peak = 0, stored = 0;
+    long steps = 0;
+    bool relaxed = false;
+    std::vector<std::pair<Real, Real>> window;
+  };
+  State state() const {
+    return State{start_, peak_, stored_, steps_, relaxed_, {window_.begin(), window_.end()}};
+  }
+  void restore(const State& state) {
+    start_ = state.start;
+    peak_ = state.peak;
+    stored_ = state.stored;
+    steps_ = state.steps;
+    relaxed_ = state.relaxed;
+    window_.assign(state.window.begin(), state.window.end());
+  }
 
  private:
   RelaxationSpec spec_;

@@ -4,6 +4,7 @@
 /// deck's stages. Each stage hands the points to its solver; the loop itself is the
 /// ExaMPM five lines: choose dt, step, advance time, write when due, report progress.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,20 +21,26 @@ class ResultsWriter;
 class CsvWriter;
 class ProgressReporter;
 class ProbeWriter;
+class RelaxationMonitor;
+struct CheckpointState;
 
 /// Options of `argine run` that are not part of the deck.
 struct RunOptions {
   std::string output_directory = "results";  ///< where the Exodus and CSV files go
   bool quiet = false;                        ///< no progress output
+  std::string restart;                       ///< (P8) checkpoint file to continue from; "": none
 };
 
 /// What a finished run measured.
 struct RunSummary {
-  long long steps = 0;          ///< time steps taken over all stages
-  long long point_updates = 0;  ///< sum over steps of the number of material points
-  double wall_seconds = 0;      ///< wall time of the stage loop (s)
-  Real end_time = 0;            ///< simulated time at the end (s)
-  int output_steps = 0;         ///< time steps written to the Exodus files
+  long long steps = 0;                  ///< time steps taken over all stages
+  long long point_updates = 0;          ///< sum over steps of the number of material points
+  double wall_seconds = 0;              ///< wall time of the stage loop (s)
+  Real end_time = 0;                    ///< simulated time at the end (s)
+  int output_steps = 0;                 ///< time steps written to the Exodus files
+  int checkpoints = 0;                  ///< (P8) checkpoints written by this process
+  double checkpoint_seconds = 0;        ///< (P8) wall time spent writing them (s)
+  std::uintmax_t checkpoint_bytes = 0;  ///< (P8) size of the last one (bytes)
 };
 
 class Simulation {
@@ -96,6 +103,23 @@ class Simulation {
   Real next_probe_time_ = 0;                  ///< (P4)
   Real initial_time_step_ = 0;  ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
+
+  // ---- checkpoint / restart (P8; SimulationCheckpoint.cpp, doc/checkpoints.md)
+  void readRestartCheckpoint();  ///< options_.restart -> resume_ (InputError naming the file)
+  void restoreFromCheckpoint();  ///< after the writers reopened: materials, points, solver
+  bool resumeStage(RelaxationMonitor* relaxation);  ///< true once, in the checkpoint's stage
+  void checkpointIfDue(bool mid_stage);             ///< after a step / at a stage's end
+  void writeCheckpointIfDue(bool mid_stage);
+  void writeCheckpointNow(bool mid_stage);
+  std::unique_ptr<CheckpointState> resume_;  ///< the checkpoint a restart continues from
+  bool resume_pending_ = false;              ///< its stage has not yet been resumed
+  std::size_t stage_index_ = 0;              ///< the stage running
+  Real stage_start_ = 0;                     ///< (s) its start time
+  Real next_output_ = 0;                     ///< (s) its next output time
+  RelaxationMonitor* relaxation_ = nullptr;  ///< its relaxation monitor, if any
+  std::uint64_t deck_hash_ = 0;
+  double last_checkpoint_wall_ = 0;     ///< (s, steady clock) run start or last checkpoint
+  long long checkpoint_step_mark_ = 0;  ///< steps / Every Steps at the last checkpoint
 };
 
 /// Throws InputError for anything the deck asks for that this build cannot run yet: a

@@ -1,0 +1,44 @@
+// Checkpoint/restart of the explicit solver (simulation/Checkpoint.hpp): what it carries
+// from step to step, and how it continues from a checkpoint bit for bit.
+#include <stdexcept>
+
+#include "argine/physics/ExplicitTwoPhaseSolver.hpp"
+#include "argine/points/MaterialPoints.hpp"
+
+namespace argine {
+
+ExplicitTwoPhaseSolver::ResumeState ExplicitTwoPhaseSolver::resumeState() const {
+  ResumeState state;
+  state.time = time_;
+  state.diagnostics = diagnostics_;
+  state.energy_scale = energy_scale_;
+  state.stage_started = stage_started_;
+  state.time_step = time_step_.state();
+  return state;
+}
+
+void ExplicitTwoPhaseSolver::resume(const ResumeState& state) {
+  if (state.stage_started && !stage_started_)
+    throw std::logic_error("ExplicitTwoPhaseSolver::resume of a stage before beginStage");
+  time_ = state.time;
+  diagnostics_ = state.diagnostics;
+  if (state.stage_started) {
+    energy_scale_ = state.energy_scale;
+    time_step_.restore(state.time_step);
+  }
+  // The uninterrupted run relocated the points from these positions at the end of the last
+  // step (or re-relocated them after sorting): doing it again gives the same elements, local
+  // coordinates and shape functions bit for bit. Before its first step (e.g. after implicit
+  // stages, which do not move the points) it holds the shapes the constructor evaluated from
+  // the seeded elements and local coordinates, which relocation would reproduce only to
+  // round-off: evaluate those again.
+  if (state.diagnostics.step == 0)
+    evaluatePointShapes(mesh_, points_, shapes_);
+  else
+    relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  nodes_next_.rebuild(mesh_, points_);
+  nodes_next_changed_ = true;
+  free_boundary_stale_ = true;  // detected again from the points' elements
+}
+
+}  // namespace argine

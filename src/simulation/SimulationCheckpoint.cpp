@@ -1,0 +1,198 @@
+// Checkpoints and restart of a run (issue P8, doc/checkpoints.md): what the Simulation
+// writes, and how `argine run DECK --restart FILE` picks the run up so that it continues bit
+// for bit and its files end up as those of an uninterrupted run. One rank only.
+#include <mpi.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+
+#include "argine/checkpoint/CheckpointFile.hpp"
+#include "argine/core/Error.hpp"
+#include "argine/input/DeckWords.hpp"
+#include "argine/output/CsvWriter.hpp"
+#include "argine/output/ResultsWriter.hpp"
+#include "argine/physics/ExplicitTwoPhaseSolver.hpp"
+#include "argine/probes/ProbeWriter.hpp"
+#include "argine/simulation/Checkpoint.hpp"
+#include "argine/simulation/MaterialChanges.hpp"
+#include "argine/simulation/RelaxationMonitor.hpp"
+#include "argine/simulation/Simulation.hpp"
+
+namespace argine {
+
+namespace {
+long long faultStopStep();
+double steadySeconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+void Simulation::readRestartCheckpoint() {
+  const bool restart = !options_.restart.empty();
+  if (!restart && !deck_.output.checkpoint.enabled()) return;
+  // One rank: every rank would write the same file (and a decomposed run would need them all).
+  int initialised = 0, ranks = 1;
+  MPI_Initialized(&initialised);
+  if (initialised) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  if (ranks > 1)
+    throw InputError(
+        restart ? options_.restart : "Output/Checkpoint",
+        "checkpoints and restart run on one MPI rank only; this run has " + std::to_string(ranks));
+  deck_hash_ = deck_.path.empty() ? 0 : fileHash(deck_.path);
+  if (!restart) return;
+  const std::string& path = options_.restart;
+  auto state = std::make_unique<CheckpointState>();
+  state->points.allocate(points_.count);
+  readCheckpoint(path, deck_hash_, *state);
+  if (state->mesh_nodes != mesh_.numNodes() || state->mesh_elements != mesh_.numElements())
+    throw InputError(
+        path, "checkpoint of a mesh of " + std::to_string(state->mesh_nodes) + " nodes and " +
+                  std::to_string(state->mesh_elements) + " elements; the deck's mesh has " +
+                  std::to_string(mesh_.numNodes()) + " and " + std::to_string(mesh_.numElements()));
+  const auto stages = static_cast<std::int64_t>(deck_.stages.size());
+  if (state->stage_index < 0 || state->stage_index >= stages)
+    throw InputError(path, "corrupt checkpoint: stage index " + std::to_string(state->stage_index) +
+                               " of " + std::to_string(stages) + " stages");
+  if (state->mid_stage && deck_.stages[state->stage_index].solver == SolverKind::ImplicitSeepage)
+    throw InputError(path, "corrupt checkpoint: inside an implicit seepage stage");
+  resume_ = std::move(state);
+}
+
+void Simulation::restoreFromCheckpoint() {
+  if (!resume_) return;
+  CheckpointState& s = *resume_;
+  const std::string& path = options_.restart;
+  if (s.flux_last_step.size() != flux_names_.size() ||
+      s.flux_cumulative.size() != flux_names_.size())
+    throw InputError(path, "checkpoint of " + std::to_string(s.flux_cumulative.size()) +
+                               " hydraulic conditions; the deck has " +
+                               std::to_string(flux_names_.size()));
+  // The materials as the checkpointed run had them: the changes of every stage begun.
+  const std::size_t begun = static_cast<std::size_t>(s.stage_index) + (s.mid_stage ? 1 : 0);
+  bool changed = false;
+  for (std::size_t k = 0; k < begun; ++k) {
+    const StageSpec& stage = deck_.stages[k];
+    if (stage.material_changes.empty()) continue;
+    applyMaterialChanges(stage.name, stage.material_changes, deck_.materials);
+    changed = true;
+  }
+  if (changed) solver_->setMaterials(deck_.materials);
+  // Inside a stage: its settings, boundary conditions and time-step control from the deck;
+  // what beginStage does to the points is overwritten by the checkpoint's points next.
+  if (s.mid_stage) solver_->beginStage(deck_.stages[s.stage_index]);
+  points_ = s.points;  // same count; the solver refers to points_, so it sees them
+  ExplicitTwoPhaseSolver::ResumeState solver_state = s.solver;
+  solver_state.stage_started = s.mid_stage;
+  solver_->resume(solver_state);
+
+  summary_.steps = s.steps;
+  summary_.point_updates = s.point_updates;
+  next_probe_time_ = s.next_probe_time;
+  initial_output_written_ = s.initial_output_written;
+  initial_time_step_ = s.initial_time_step;
+  initial_liquid_mass_ = s.initial_liquid_mass;
+  flux_last_step_ = s.flux_last_step;
+  flux_cumulative_ = s.flux_cumulative;
+  flux_all_nodes_cumulative_ = s.flux_all_nodes_cumulative;
+  stage_log_ = s.stage_log;
+  stage_start_ = s.stage_start;
+  next_output_ = s.next_output;
+  resume_pending_ = s.mid_stage;
+  const long long every = deck_.output.checkpoint.every_steps;
+  checkpoint_step_mark_ = every > 0 ? s.steps / every : 0;
+
+  char line[512];
+  std::snprintf(line, sizeof line, "restarted from %s: %s stage '%s' at t = %.9g s, step %lld",
+                path.c_str(), s.mid_stage ? "inside" : "at the start of",
+                deck_.stages[s.stage_index].name.c_str(), solver_->time(),
+                static_cast<long long>(s.steps));
+  log(line);
+}
+
+bool Simulation::resumeStage(RelaxationMonitor* relaxation) {
+  if (!resume_pending_) return false;
+  resume_pending_ = false;
+  if (relaxation && resume_->has_relaxation) relaxation->restore(resume_->relaxation);
+  return true;
+}
+
+// Fault injection for the crash and restart tests (doc/checkpoints.md): with
+// ARGINE_FAULT_STOP_AT_STEP=N in the environment the process stops itself (SIGSTOP) after
+// explicit step N, its output and its checkpoint if one was due, so that a test kills it with
+// SIGKILL at a known point. Read once; absent or unparsable: never.
+namespace {
+long long faultStopStep() {
+  static const long long step = [] {
+    const char* text = std::getenv("ARGINE_FAULT_STOP_AT_STEP");
+    char* end = nullptr;
+    const long long value = text ? std::strtoll(text, &end, 10) : -1;
+    return text && end != text && *end == '\0' ? value : -1;
+  }();
+  return step;
+}
+}  // namespace
+
+void Simulation::checkpointIfDue(bool mid_stage) {
+  writeCheckpointIfDue(mid_stage);
+  if (mid_stage && summary_.steps == faultStopStep()) std::raise(SIGSTOP);
+}
+
+void Simulation::writeCheckpointIfDue(bool mid_stage) {
+  const CheckpointSpec& spec = deck_.output.checkpoint;
+  if (!spec.enabled()) return;
+  // At a stage boundary the checkpoint says "before the next stage": none after the last.
+  if (!mid_stage && stage_index_ + 1 >= deck_.stages.size()) return;
+  // Steps: whenever the step count passes a multiple of Every Steps (the same steps in a
+  // restarted run as in the uninterrupted one).
+  const bool steps_due =
+      spec.every_steps > 0 && summary_.steps / spec.every_steps > checkpoint_step_mark_;
+  const bool wall_due =
+      spec.wall_interval > 0 && steadySeconds() - last_checkpoint_wall_ >= spec.wall_interval;
+  if (steps_due || wall_due) writeCheckpointNow(mid_stage);
+}
+
+void Simulation::writeCheckpointNow(bool mid_stage) {
+  const double begin = steadySeconds();
+  CheckpointState s;
+  s.stage_index = static_cast<std::int64_t>(mid_stage ? stage_index_ : stage_index_ + 1);
+  s.mid_stage = mid_stage;
+  s.stage_start = stage_start_;
+  s.next_output = next_output_;
+  s.steps = summary_.steps;
+  s.point_updates = summary_.point_updates;
+  s.next_probe_time = next_probe_time_;
+  s.initial_output_written = initial_output_written_;
+  s.initial_time_step = initial_time_step_;
+  s.initial_liquid_mass = initial_liquid_mass_;
+  s.flux_last_step = flux_last_step_;
+  s.flux_cumulative = flux_cumulative_;
+  s.flux_all_nodes_cumulative = flux_all_nodes_cumulative_;
+  s.stage_log = stage_log_;
+  s.solver = solver_->resumeState();
+  s.solver.stage_started = mid_stage;
+  if (mid_stage && relaxation_) {
+    s.has_relaxation = true;
+    s.relaxation = relaxation_->state();
+  }
+  s.results = results_->resumePoint();
+  s.diagnostics_bytes = diagnostics_->bytes();
+  s.boundary_flux_bytes = boundary_flux_ ? boundary_flux_->bytes() : 0;
+  if (probes_)
+    for (const auto bytes : probes_->fileBytes()) s.probe_bytes.push_back(bytes);
+  s.mesh_nodes = mesh_.numNodes();
+  s.mesh_elements = mesh_.numElements();
+  s.points = points_;  // shares the Views: written as they are now
+  summary_.checkpoint_bytes =
+      writeCheckpoint(checkpointPath(options_.output_directory, deck_.output.name), deck_hash_, s);
+  const double end = steadySeconds();
+  summary_.checkpoints += 1;
+  summary_.checkpoint_seconds += end - begin;
+  last_checkpoint_wall_ = end;
+  const long long every = deck_.output.checkpoint.every_steps;
+  checkpoint_step_mark_ = every > 0 ? summary_.steps / every : 0;
+}
+
+}  // namespace argine
