@@ -2,6 +2,10 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+#include <numeric>
+#include <string>
+
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/points/PointFields.hpp"
@@ -153,6 +157,55 @@ void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& poi
   }
   if (static_cast<int>(kept.size()) == points.count) return;
   points = rebuildPoints(points, kept, {}, migratedValuesPerPoint(points));
+}
+
+MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks) {
+  static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
+                "the gather packs on the host");
+  int ranks = 1, me = 0;
+  MPI_Comm_size(comm, &ranks);
+  MPI_Comm_rank(comm, &me);
+  const int values = migratedValuesPerPoint(points);
+  std::vector<Real> mine(static_cast<std::size_t>(points.count) * values);
+  for (int p = 0; p < points.count; ++p)
+    packPoint(points, p, &mine[static_cast<std::size_t>(p) * values]);
+  const int size = static_cast<int>(mine.size());
+  std::vector<int> sizes(ranks, 0), offsets(ranks + 1, 0);
+  if (to_all_ranks)
+    MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
+  else
+    MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, comm);
+  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + sizes[r];
+  std::vector<Real> all(static_cast<std::size_t>(offsets[ranks]));
+  if (to_all_ranks)
+    MPI_Allgatherv(mine.data(), size, MPI_DOUBLE, all.data(), sizes.data(), offsets.data(),
+                   MPI_DOUBLE, comm);
+  else
+    MPI_Gatherv(mine.data(), size, MPI_DOUBLE, all.data(), sizes.data(), offsets.data(), MPI_DOUBLE,
+                0, comm);
+  MaterialPoints gathered;
+  if (!to_all_ranks && me != 0) {
+    gathered.allocate(0);
+    return gathered;
+  }
+  // The id is a field of the packed point: find its slot from a point packed with known ids.
+  const int count = offsets[ranks] / values;
+  std::vector<Real> id_of(count);
+  {
+    int slot = 0, id_slot = -1;
+    forEachPointField(points, [&](const char* name, const auto& field) {
+      if (std::string(name) == "id") id_slot = slot;
+      slot += componentsOf(field);
+    });
+    for (int k = 0; k < count; ++k) id_of[k] = all[static_cast<std::size_t>(k) * values + id_slot];
+  }
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return id_of[a] < id_of[b]; });
+  gathered.allocate(count);
+  for (int k = 0; k < count; ++k)
+    unpackPoint(&all[static_cast<std::size_t>(order[k]) * values], gathered, k);
+  return gathered;
 }
 
 }  // namespace argine

@@ -7,6 +7,8 @@
 /// are. The order of the kept points is unchanged; received points follow in sender-rank
 /// order. Collective over the decomposition's ranks.
 
+#include <mpi.h>
+
 #include <vector>
 
 #include "argine/core/Types.hpp"
@@ -41,5 +43,10 @@ MigrationCounts exchangePoints(const RankDecomposition& decomposition, MaterialP
 /// Keeps only the points whose element this rank owns (and, on rank 0, the points outside
 /// the mesh): the first distribution of points seeded identically on every rank. Local.
 void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& points);
+/// The points of all ranks of `comm`, ordered by id (so the result does not depend on how
+/// the points are split): on rank 0 only, or on every rank when `to_all_ranks`; an empty
+/// set elsewhere. For output (rank 0 writes the files) and for handing the points to a
+/// stage that keeps them replicated (the implicit seepage solver). Collective over `comm`.
+MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks);
 
 }  // namespace argine
