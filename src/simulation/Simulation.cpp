@@ -70,9 +70,12 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
   // Several MPI ranks: every rank seeded the same points; the explicit stages keep those of
   // its elements (doc/parallel.md). Only rank 0 prints and writes.
-  int ranks = 1, rank = 0;
-  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  int initialised = 0, ranks = 1, rank = 0;
+  MPI_Initialized(&initialised);  // a library user may run without MPI: one rank
+  if (initialised) {
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  }
   if (ranks > 1) {
     ranks_ = std::make_unique<RankDecomposition>(MPI_COMM_WORLD, mesh_,
                                                  pointsPerElementWeights(mesh_, points_));
