@@ -262,9 +262,9 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   // Several ranks: each node counted on its owner; the sum over the ranks comes with the
   // end-of-step reduction (relocatePoints).
   if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
-  const std::vector<Real> masses =
-      boundaryFluxMasses(hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_,
-                         boundary_fields_, grid_, dt);
+  const std::vector<Real> masses = boundaryFluxMasses(
+      hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, boundary_fields_,
+      grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>());
   for (int c = 0; c <= conditions; ++c)
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
