@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -146,6 +147,18 @@ int main(int argc, char** argv) {
     } catch (const std::invalid_argument& error) {
       std::fprintf(stderr, "argine: %s\n%s", error.what(), kUsage);
       exit_code = 1;
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "argine: internal error: %s\n", error.what());
+      exit_code = argine::kExitRunError;
+    }
+    // On several ranks an error may be raised on one rank only while the others wait in a
+    // collective call: end them all at once, with the exit code (doc/parallel.md).
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    if (exit_code != argine::kExitOk && ranks > 1) {
+      std::fflush(stdout);
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, exit_code);
     }
   }
   MPI_Finalize();

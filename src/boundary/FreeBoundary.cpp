@@ -56,7 +56,18 @@ void FreeBoundary::detect(const MaterialPoints& points) {
     active_list_.push_back(e);
   }
   std::sort(active_list_.begin(), active_list_.end());
+  findFreeSides();
+}
 
+void FreeBoundary::detectFromActiveElements(const std::vector<int>& active_elements) {
+  ++detections_;
+  for (const int e : active_list_) active_[e] = 0;  // clear through the old list
+  active_list_ = active_elements;
+  for (const int e : active_list_) active_[e] = 1;
+  findFreeSides();
+}
+
+void FreeBoundary::findFreeSides() {
   sides_.clear();
   boundary_elements_.clear();
   nodes_.clear();

@@ -6,7 +6,11 @@
 
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
+#include "argine/materials/KernelMath.hpp"
 #include "argine/mesh/Mesh.hpp"
+#include "argine/parallel/PointMigration.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
+#include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/PointInitialisation.hpp"
 #include "argine/physics/PointUpdates.hpp"
@@ -83,6 +87,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   hydraulic_ = HydraulicConditions(mesh_, stage, time_);  // tables count from the stage start
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
   free_boundary_stale_ = true;
+  hydraulic_plan_current_ = false;
 
   const MaterialPoints pts = points_;
   if (stage.reset_displacements)
@@ -100,14 +105,52 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
         KOKKOS_LAMBDA(const int p) {
           for (int d = 0; d < kDim; ++d) pts.velocity_solid(p, d) = 0;
         });
-  energy_scale_ =
-      energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  if (ranks_) {  // the point sums over the ranks; the boundary loads once
+    std::vector<Real> scale{energyScale(points_, table_, gravity_, 0, mesh_size_)};
+    sumOverRanks(ranks_->comm(), scale);
+    energy_scale_ = scale[0] + boundaries_.totalLoadMagnitude() * mesh_size_;
+  } else {
+    energy_scale_ =
+        energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  }
   stage_started_ = true;
 }
 
 const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
   PhaseTimer timer(profile_, StepPhase::TimeStep);
-  return time_step_.next(points_, table_);
+  if (!ranks_) return time_step_.next(points_, table_);
+  TimeStepChoice local;
+  local.time_step = local.critical_step = kmath::infinity();
+  if (points_.count > 0) local = time_step_.next(points_, table_);
+  global_choice_ = globalTimeStep(ranks_->comm(), local);
+  return global_choice_;
+}
+
+// ------------------------------------------------------------------ several ranks
+
+void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) {
+  for (int m = 0; m < table_.count(); ++m) {
+    const auto& locking = table_.host(m).locking;
+    if (locking.volumetric_strain == IncrementAveraging::Nodal ||
+        locking.liquid_pressure == IncrementAveraging::Nodal)
+      throw InputError("Materials/Locking Mitigation",
+                       "element averaging on several MPI ranks (nodal averaging is not "
+                       "distributed yet)");
+  }
+  ranks_ = &decomposition;
+  exchange_ = std::make_unique<NodalExchange>(decomposition);
+  keepOwnedPoints(decomposition, points_);
+  rates_.allocate(points_.count);
+  evaluatePointShapes(mesh_, points_, shapes_);
+  nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
+  nodes_next_changed_ = true;
+  free_boundary_stale_ = true;
+}
+
+Kokkos::View<const int*, MemSpace> ExplicitTwoPhaseSolver::alwaysActiveNodes() const {
+  // A shared node is cleared, completed and solved on every rank holding it, whether or not
+  // this rank's points touch it, so that all ranks hold the same value there.
+  return ranks_ ? ranks_->sharedNodeView() : Kokkos::View<const int*, MemSpace>();
 }
 
 void ExplicitTwoPhaseSolver::step(Real dt) {
@@ -155,6 +198,7 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
   nodes_next_changed_ = false;
   mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_);
+  if (exchange_) sumGridAtSharedNodes(*exchange_, grid_);  // several ranks: complete the sums
   boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
                              grid_.force_liquid_i);
   computeNodalVelocities(nodes_in_use_, grid_);
@@ -163,17 +207,42 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
 void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   // The free boundary changes only when a point changes element (Fig. 4.4).
   if (!free_boundary_stale_) return;
-  free_boundary_.detect(points_);
+  if (ranks_)  // the elements holding points on any rank
+    free_boundary_.detectFromActiveElements(
+        globalActiveElements(ranks_->comm(), points_, mesh_.numElements()));
+  else
+    free_boundary_.detect(points_);
   free_boundary_stale_ = false;
+  hydraulic_plan_current_ = false;
+}
+
+bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
+  // The plan depends on the free boundary, gravity and the conditions' values at time_ only:
+  // with all three unchanged (constant heads and rain, between changes of the boundary) the
+  // last plan is the same plan, and rebuilding it (host maps, device copies) is skipped.
+  if (!hydraulic_plan_current_ || planned_gravity_ != gravity_) return false;
+  const auto& conditions = hydraulic_.conditions();
+  const auto& values = hydraulic_.currentValues();
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const Real value =
+        conditions[c].kind == BoundaryKind::SeepageFace ? 0 : conditions[c].series.at(time_);
+    if (value != values[c]) return false;
+  }
+  return true;
 }
 
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   if (hydraulic_.empty()) return;
   detectFreeBoundary();
-  hydraulic_.plan(time_, gravity_, free_boundary_);
+  if (!hydraulicPlanIsCurrent()) {
+    hydraulic_.plan(time_, gravity_, free_boundary_);
+    hydraulic_plan_current_ = true;
+    planned_gravity_ = gravity_;
+  }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
-                       boundary_fields_);                // 4.51, n_L, flux weights at t^k
+                       boundary_fields_);  // 4.51, n_L, flux weights at t^k
+  if (exchange_) sumBoundaryGradientsAtSharedNodes(*exchange_, boundary_fields_);
   argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
 }
 
@@ -190,8 +259,12 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
 void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   if (hydraulic_.empty()) return;
   const int conditions = static_cast<int>(hydraulic_.conditions().size());
-  const std::vector<Real> masses = boundaryFluxMasses(hydraulic_.ownership(), conditions,
-                                                      nodes_in_use_, boundary_fields_, grid_, dt);
+  // Several ranks: each node counted on its owner; the sum over the ranks comes with the
+  // end-of-step reduction (relocatePoints).
+  if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
+  const std::vector<Real> masses = boundaryFluxMasses(
+      hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, boundary_fields_,
+      grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>());
   for (int c = 0; c <= conditions; ++c)
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
@@ -213,6 +286,7 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // and sums the kinetic energies, in the same pass over the points.
   kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
                                                 points_, grid_);
+  if (exchange_) sumMomentaAtSharedNodes(*exchange_, grid_);  // (kinetic_: end of step)
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
@@ -244,12 +318,40 @@ void ExplicitTwoPhaseSolver::updatePointStates() {
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {
-  const RelocationCounts counts =
+  RelocationCounts counts =
       relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+  if (ranks_) {
+    // The step's sums over the ranks in one reduction (the stability check reads them)...
+    EndOfStepSums sums;
+    sums.kinetic_solid = kinetic_.solid;
+    sums.kinetic_liquid = kinetic_.liquid;
+    sums.non_finite_velocity = kinetic_.non_finite_points;
+    sums.liquid_mass = totals_.liquid_mass;
+    sums.non_finite_state = totals_.non_finite_points;
+    sums.lost = counts.lost;
+    sums.changed_element = counts.changed_element;
+    sums.emigrants = countEmigrants(*ranks_, points_);
+    sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, reduction_scratch_);
+    kinetic_.solid = sums.kinetic_solid;
+    kinetic_.liquid = sums.kinetic_liquid;
+    kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);
+    totals_.liquid_mass = sums.liquid_mass;
+    totals_.non_finite_points = static_cast<int>(sums.non_finite_state);
+    counts.lost = static_cast<int>(sums.lost);
+    counts.changed_element = static_cast<int>(sums.changed_element);
+    // ... then the points that entered another rank's element move there.
+    const MigrationCounts moved =
+        exchangePoints(*ranks_, points_, static_cast<long long>(sums.emigrants));
+    migrated_points_ += moved.total;
+    if (moved.sent > 0 || moved.received > 0) {
+      relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+      time_step_.pointsReordered(points_);
+    }
+  }
   diagnostics_.lost_points = counts.lost;
   // No point changed element (the common case): the active nodes stay nodes_in_use_.
   if (counts.changed_element > 0) {
-    nodes_next_.rebuild(mesh_, points_);
+    nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
     nodes_next_changed_ = true;
     free_boundary_stale_ = true;
   }
@@ -279,7 +381,7 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
   diagnostics_.liquid_mass = totals.liquid_mass;
   diagnostics_.active_nodes = nodes_in_use_.count();
   diagnostics_.outflow_limited_points = outflow_limited_;
-  diagnostics_.time_step_choice = time_step_.last();
+  diagnostics_.time_step_choice = ranks_ ? global_choice_ : time_step_.last();
 
   auto fail = [&](const std::string& what) {
     std::ostringstream out;
@@ -292,7 +394,7 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
     std::ostringstream out;
     out << totals.non_finite_points
         << " point(s) with non-finite values or collapsed volume, first "
-        << describePoint(points_, point, true);
+        << (point >= 0 ? describePoint(points_, point, true) : "on another MPI rank");
     fail(out.str());
   }
   const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
@@ -300,8 +402,9 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
   if (kinetic > bound && kinetic > 0) {
     std::ostringstream out;
     out << "kinetic energy " << kinetic << " J/m exceeds " << energy_growth_limit_
-        << " x the stage's energy scale " << energy_scale_
-        << " J/m; most energetic: " << describePoint(points_, mostEnergeticPoint(points_), false);
+        << " x the stage's energy scale " << energy_scale_ << " J/m; most energetic: "
+        << (points_.count > 0 ? describePoint(points_, mostEnergeticPoint(points_), false)
+                              : "on another MPI rank");
     fail(out.str());
   }
 }

@@ -212,7 +212,8 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
-                                     Real dt) {
+                                     Real dt,
+                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned) {
   std::vector<Real> masses(conditions + 1, 0.0);
   const auto weight_i = fields.flux_weight_i;
   const auto vl_i = grid.velocity_liquid_i;
@@ -224,12 +225,13 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
   };
   const auto owned = ownership.node;
   const auto owner = ownership.owner;
+  const bool masked = rank_owned.extent(0) > 0;
   for (int c = 0; c < conditions; ++c) {
     Real sum = 0;
     Kokkos::parallel_reduce(
         "boundary_flux_of_condition", Kokkos::RangePolicy<ExecSpace>(0, ownership.count()),
         KOKKOS_LAMBDA(const int j, Real& s) {
-          if (owner(j) == c) s += inflow(owned(j));
+          if (owner(j) == c && (!masked || rank_owned(owned(j)))) s += inflow(owned(j));
         },
         sum);
     masses[c] = sum;

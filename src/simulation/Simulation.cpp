@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <mpi.h>
+
 #include "argine/boundary/DeckTimeSeriesCheck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/init/Initialisation.hpp"
@@ -13,6 +15,8 @@
 #include "argine/output/CsvWriter.hpp"
 #include "argine/output/ProgressReporter.hpp"
 #include "argine/output/ResultsWriter.hpp"
+#include "argine/parallel/PointMigration.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointInitialisation.hpp"
@@ -68,6 +72,20 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
   solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
   // Output and the log follow points by id, so the solver may reorder them for locality.
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
+  // Several MPI ranks: every rank seeded the same points; the explicit stages keep those of
+  // its elements (doc/parallel.md). Only rank 0 prints and writes.
+  int initialised = 0, ranks = 1, rank = 0;
+  MPI_Initialized(&initialised);  // a library user may run without MPI: one rank
+  if (initialised) {
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  }
+  if (ranks > 1) {
+    ranks_ = std::make_unique<RankDecomposition>(MPI_COMM_WORLD, mesh_,
+                                                 pointsPerElementWeights(mesh_, points_));
+    solver_->distribute(*ranks_);
+  }
+  if (rank != 0) options_.quiet = true;
 }
 
 Simulation::~Simulation() = default;
@@ -88,33 +106,38 @@ RunSummary Simulation::run() {
 
   std::vector<std::string> nodal_names;
   for (const auto& field : solver_->nodalFields()) nodal_names.push_back(field.name);
+  const MaterialPoints initial_points = gatheredPoints();
   // (P8) A restart continues the checkpointed run's files where the checkpoint left them.
-  if (resume_)
+  if (!writes()) {
+    // rank > 0 of a distributed run: no files
+  } else if (resume_)
     results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
                                                materialNames(deck_), nodal_names, resume_->results);
   else
     results_ = std::make_unique<ResultsWriter>(options_.output_directory, deck_.output.name, mesh_,
-                                               materialNames(deck_), nodal_names, points_);
+                                               materialNames(deck_), nodal_names, initial_points);
   const std::string diagnostics_path =
       options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv";
   const std::vector<std::string> diagnostics_columns{
       "time",        "time_step",  "kinetic_energy_solid", "kinetic_energy_liquid",
       "liquid_mass", "lost_points"};
-  if (resume_)
+  if (!writes()) {
+  } else if (resume_)
     diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns,
                                                CsvResume{resume_->diagnostics_bytes});
   else
     diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns);
   openBoundaryFluxLog();
-  if (!deck_.probes.empty())
+  if (!deck_.probes.empty() && writes())
     probes_ = std::make_unique<ProbeWriter>(
-        deck_.probes, options_.output_directory, deck_.output.name, points_,
+        deck_.probes, options_.output_directory, deck_.output.name, initial_points,
         resume_
             ? std::vector<std::uintmax_t>(resume_->probe_bytes.begin(), resume_->probe_bytes.end())
             : std::vector<std::uintmax_t>{});
   if (!options_.quiet && !stage_log_.empty()) std::printf("argine: %s\n", stage_log_[0].c_str());
   restoreFromCheckpoint();  // (P8) no-op without --restart
 
+  total_points_ = totalPoints();
   const double wall_start = wallSeconds();
   last_checkpoint_wall_ = wall_start;
   for (stage_index_ = resume_ ? static_cast<std::size_t>(resume_->stage_index) : 0;
@@ -124,14 +147,16 @@ RunSummary Simulation::run() {
   }
   summary_.wall_seconds = wallSeconds() - wall_start;
   summary_.end_time = solver_->time();
-  summary_.output_steps = results_->steps();
+  summary_.output_steps = results_ ? results_->steps() : 0;
+  const long long total_points = totalPoints();  // collective: before the rank-0 report
 
   if (!options_.quiet) {
     const double rate =
         summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
     std::printf(
         "argine: %lld steps, %d points, %.3g s simulated in %.2f s wall: %.3g point-updates/s\n",
-        summary_.steps, points_.count, summary_.end_time, summary_.wall_seconds, rate);
+        summary_.steps, static_cast<int>(total_points), summary_.end_time, summary_.wall_seconds,
+        rate);
     std::printf("argine: where the step time went:\n%s",
                 solver_->profile().describe("argine:   ").c_str());
     std::printf("argine: results in %s and %s\n", results_->gridPath().c_str(),
@@ -185,21 +210,24 @@ void Simulation::runStage(const StageSpec& stage) {
     accumulateBoundaryFluxes();
     checkGuards(stage);  // (P8) before any output of this step
     ++summary_.steps;
-    summary_.point_updates += points_.count;
+    summary_.point_updates += distributed() ? total_points_ : points_.count;
     bool written = false;
     if (solver_->time() >= next_output_ - tolerance) {
       writeOutput();
       written = true;
       next_output_ = std::min(end, next_output_ + interval);
       if (next_output_ <= solver_->time() + tolerance) next_output_ = end;
-    } else if (probes_ && probes_->interval() > 0 &&
+    } else if (!deck_.probes.empty() && deck_.probes.interval > 0 &&
                solver_->time() >= next_probe_time_ - tolerance) {
       writeProbes();
     }
-    progress_->update(summary_.steps, solver_->time(), dt, points_.count);
+    progress_->update(summary_.steps, solver_->time(), dt,
+                      distributed() ? static_cast<int>(total_points_) : points_.count);
     if (relaxation) {
       const auto& d = solver_->diagnostics();
-      const Real stored = storedElasticEnergy(points_, *relaxation_table);
+      Real stored = storedElasticEnergy(points_, *relaxation_table);
+      if (distributed())  // the kinetic energies are reduced already
+        MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
       if (relaxation->add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid,
                           stored)) {
         char line[256];
@@ -239,6 +267,13 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     initial_output_written_ = true;
     writeOutput();
   }
+  // The implicit solver keeps the points replicated on every rank (it splits its matrix
+  // rows over the ranks itself): gather them for the stage, hand them back to the explicit
+  // solver's ranks after it (redistribute below).
+  if (distributed()) {
+    points_ = gatherPoints(MPI_COMM_WORLD, points_, true);
+    points_replicated_ = true;
+  }
   ImplicitSeepageSolver seepage(mesh_, points_, deck_.materials);
   seepage.setTime(solver_->time());
   seepage.beginStage(stage);
@@ -260,6 +295,10 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     summary_.point_updates += seepage.totals().steps * points_.count;
     writeOutput();
     progress_->update(summary_.steps, seepage.time(), seepage.nextStep(), points_.count);
+  }
+  if (distributed()) {  // each rank keeps the points of its elements again
+    points_replicated_ = false;
+    solver_->distribute(*ranks_);
   }
   progress_->endStage(summary_.steps, seepage.time(), seepage.nextStep());
   if (!options_.quiet) {
@@ -292,13 +331,17 @@ void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choic
 }
 
 void Simulation::writeOutput() {
-  results_->write(solver_->time(), points_, toOutputFields(solver_->nodalFields()));
-  writeDiagnostics();
+  const MaterialPoints points = gatheredPoints();
+  const std::vector<NodalField> nodal = gatheredNodalFields();
+  total_points_ = totalPoints();
+  if (results_) results_->write(solver_->time(), points, nodal);
+  writeDiagnostics(points);
   writeBoundaryFluxes();
-  writeProbes();
+  writeProbes(points);
 }
 
-void Simulation::writeDiagnostics() {
+void Simulation::writeDiagnostics(const MaterialPoints& points) {
+  if (!diagnostics_) return;
   const auto& d = solver_->diagnostics();
   if (d.step > 0) {
     diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
@@ -308,11 +351,11 @@ void Simulation::writeDiagnostics() {
   }
   // Before the first step the solver has no step sums: take them from the points, and the
   // step the first stage is about to take (P4: a meaningful t = 0 row).
-  const PointTotals totals = sumPointTotals(points_);
-  const MaterialPoints pts = points_;
+  const PointTotals totals = sumPointTotals(points);
+  const MaterialPoints pts = points;
   int lost = 0;
   Kokkos::parallel_reduce(
-      "count_lost_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+      "count_lost_points", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, int& sum) { sum += pts.element(p) < 0 ? 1 : 0; }, lost);
   diagnostics_->writeRow({solver_->time(), initial_time_step_, totals.kinetic_energy_solid,
                           totals.kinetic_energy_liquid, totals.liquid_mass,
@@ -344,11 +387,17 @@ void Simulation::writeInitialOutput() {
 }
 
 void Simulation::writeProbes() {
-  if (!probes_) return;
-  probes_->write(solver_->time(), points_);
-  if (probes_->interval() > 0) {
+  if (deck_.probes.empty()) return;
+  writeProbes(gatheredPoints());
+}
+
+void Simulation::writeProbes(const MaterialPoints& points) {
+  if (deck_.probes.empty()) return;
+  if (probes_) probes_->write(solver_->time(), points);
+  // Every rank keeps the probe clock: the gather before a probe row is collective.
+  if (deck_.probes.interval > 0) {
     while (next_probe_time_ <= solver_->time() * (1 + 1e-12))
-      next_probe_time_ += probes_->interval();
+      next_probe_time_ += deck_.probes.interval;
   }
 }
 
@@ -372,9 +421,12 @@ void Simulation::openBoundaryFluxLog() {
   if (flux_names_.empty()) return;
   flux_last_step_.assign(flux_names_.size(), 0.0);
   flux_cumulative_.assign(flux_names_.size(), 0.0);
-  const auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points_.mass_liquid);
+  // Summed over all points in id order on rank 0 (the one writing), as on one rank.
+  const MaterialPoints all = gatheredPoints();
+  const auto mass = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), all.mass_liquid);
   initial_liquid_mass_ = 0;
-  for (int p = 0; p < points_.count; ++p) initial_liquid_mass_ += mass(p);
+  for (int p = 0; p < all.count; ++p) initial_liquid_mass_ += mass(p);
+  if (!writes()) return;
   std::vector<std::string> columns{"time", "storage_change", "net_inflow_all_nodes"};
   for (const auto& name : flux_names_) {
     columns.push_back(name + "_step");
@@ -405,7 +457,7 @@ void Simulation::accumulateBoundaryFluxes() {
 }
 
 void Simulation::writeBoundaryFluxes() {
-  if (!boundary_flux_) return;
+  if (!boundary_flux_) return;  // also on ranks > 0
   const Real mass =
       solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass : initial_liquid_mass_;
   std::vector<Real> row{solver_->time(),
@@ -416,6 +468,52 @@ void Simulation::writeBoundaryFluxes() {
     row.push_back(flux_cumulative_[k]);
   }
   boundary_flux_->writeRow(row);
+}
+
+// ---------------------------------------------------------------- several MPI ranks (P7)
+
+bool Simulation::writes() const {
+  return !distributed() || ranks_->rank() == 0;
+}
+
+MaterialPoints Simulation::gatheredPoints() const {
+  if (!distributed() || points_replicated_) return points_;
+  return gatherPoints(MPI_COMM_WORLD, points_, false);
+}
+
+long long Simulation::totalPoints() const {
+  long long count = points_.count;
+  if (distributed() && !points_replicated_)
+    MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  return count;
+}
+
+std::vector<NodalField> Simulation::gatheredNodalFields() {
+  std::vector<NodalField> fields = toOutputFields(solver_->nodalFields());
+  if (!distributed()) return fields;
+  // A node's value is complete on the rank owning it (shared nodes are completed on every
+  // rank holding them): rank 0 takes each node from its owner. Exact: the sum adds zeros.
+  const auto owned =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ranks_->nodeOwnedView());
+  const int nodes = mesh_.numNodes();
+  std::vector<Real> mine(static_cast<std::size_t>(nodes) * fields.size(), 0.0);
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    const auto values = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), fields[f].values);
+    for (int n = 0; n < nodes; ++n)
+      if (owned(n)) mine[f * nodes + n] = values(n);
+  }
+  std::vector<Real> all(writes() ? mine.size() : 0);
+  MPI_Reduce(mine.data(), all.data(), static_cast<int>(mine.size()), MPI_DOUBLE, MPI_SUM, 0,
+             MPI_COMM_WORLD);
+  if (!writes()) return fields;  // not written
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    Kokkos::View<Real*, MemSpace> complete(fields[f].name, nodes);
+    const auto host = Kokkos::create_mirror_view(complete);
+    for (int n = 0; n < nodes; ++n) host(n) = all[f * nodes + n];
+    Kokkos::deep_copy(complete, host);
+    fields[f].values = complete;
+  }
+  return fields;
 }
 
 }  // namespace argine

@@ -49,6 +49,10 @@ class FreeBoundary {
   /// elements (element >= 0).
   void detect(const MaterialPoints& points);
 
+  /// The same from the list of active elements (ascending), e.g. the union over MPI ranks
+  /// of the elements holding points (physics/DistributedStep.hpp).
+  void detectFromActiveElements(const std::vector<int>& active_elements);
+
   bool isActive(int element) const { return active_[element] != 0; }
   const std::vector<int>& activeElements() const { return active_list_; }
   const std::vector<FreeSide>& sides() const { return sides_; }
@@ -65,6 +69,8 @@ class FreeBoundary {
   long detections() const { return detections_; }
 
  private:
+  void findFreeSides();  ///< sides_, boundary_elements_, nodes_ from active_ / active_list_
+
   int per_ = 0;
   std::vector<Real> x_;                   ///< node coordinates, x0 y0 x1 y1 ...
   std::vector<int> connectivity_;         ///< per_ entries per element

@@ -55,6 +55,7 @@
 ///   }
 ///   std::printf("%s", solver.profile().describe().c_str());   // where the time went
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,7 @@
 #include "argine/boundary/HydraulicConditions.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -83,6 +85,7 @@ namespace argine {
 struct MaterialPoints;
 struct MaterialSpec;
 struct Mesh;
+class RankDecomposition;
 struct StageSpec;
 
 /// What the last step did, for logs, probes and output.
@@ -181,6 +184,24 @@ class ExplicitTwoPhaseSolver {
   /// large deformations are ordered again quickly (see verification/benchmark).
   static constexpr int kRecommendedSortInterval = 50;
 
+  // ---- several MPI ranks (doc/parallel.md; the communication is physics/DistributedStep.hpp)
+  /// Runs the steps on the ranks of `decomposition` (kept by reference; it must outlive the
+  /// solver): keeps only the points of this rank's elements (every rank seeded the same
+  /// points), then each step completes the nodal sums at the shared nodes, reduces the
+  /// sums and the time step over the ranks and migrates the points that cross into another
+  /// rank's elements. Collective: every rank calls the same solver functions in the same
+  /// order. Call once, before the first beginStage. InputError for a material with nodal
+  /// volumetric averaging (not distributed yet).
+  void distribute(const RankDecomposition& decomposition);
+  /// The decomposition (nullptr on one rank without distribute()).
+  const RankDecomposition* decomposition() const { return ranks_; }
+  /// Points moved between ranks since distribute() (sum over all ranks and steps).
+  long long migratedPoints() const { return migrated_points_; }
+  /// This rank's nodal exchange traffic (nullptr without distribute()).
+  const ExchangeTraffic* exchangeTraffic() const {
+    return exchange_ ? &exchange_->traffic() : nullptr;
+  }
+
   /// Wall time per phase of the steps (and chooseTimeStep calls) since construction or the
   /// last resetProfile(), with the number of steps and point updates.
   const StepProfile& profile() const { return profile_; }
@@ -210,6 +231,7 @@ class ExplicitTwoPhaseSolver {
   void mapMassesMomentaAndForces();
   void applyHydraulicLoads();
   void detectFreeBoundary();
+  bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum();
   void solveMixtureMomentum();
   void applyAccelerationBoundaryConditions();
@@ -238,7 +260,9 @@ class ExplicitTwoPhaseSolver {
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
-  bool free_boundary_stale_ = true;  ///< a point changed element since the last detection
+  bool free_boundary_stale_ = true;      ///< a point changed element since the last detection
+  bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
+  Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
   VolumetricAveraging averaging_;     ///< anti-locking averaging (materials' Locking Mitigation)
@@ -260,6 +284,15 @@ class ExplicitTwoPhaseSolver {
   int sort_interval_ = 0;
   StepProfile profile_;
   std::vector<Kokkos::View<Real*, MemSpace>> output_;  ///< scalar copies for nodalFields()
+
+  // ---- several MPI ranks (distribute())
+  Kokkos::View<const int*, MemSpace> alwaysActiveNodes() const;  ///< shared nodes, or none
+  const RankDecomposition* ranks_ = nullptr;
+  std::unique_ptr<NodalExchange> exchange_;
+  ActiveNodes nodes_owned_;              ///< active nodes this rank owns (sums over nodes)
+  TimeStepChoice global_choice_;         ///< the last step chosen over all ranks
+  std::vector<Real> reduction_scratch_;  ///< the end-of-step Allreduce buffer
+  long long migrated_points_ = 0;
 };
 
 }  // namespace argine

@@ -95,9 +95,12 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
 /// is the same sum over ALL active nodes (= the change of the points' liquid mass).
+/// `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the condition sums then
+/// count only those (each node on one rank), as `active` does for the total. Empty: all.
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
-                                     Real dt);
+                                     Real dt,
+                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned = {});
 
 }  // namespace argine

@@ -11,11 +11,13 @@
 
 #include "argine/input/Deck.hpp"
 #include "argine/mesh/Mesh.hpp"
+#include "argine/output/GridFile.hpp"
 #include "argine/points/MaterialPoints.hpp"
 
 namespace argine {
 
 class ExplicitTwoPhaseSolver;
+class RankDecomposition;
 struct TimeStepChoice;
 class ResultsWriter;
 class CsvWriter;
@@ -73,7 +75,7 @@ class Simulation {
   void runImplicitSeepageStage(const StageSpec& stage);  ///< implicit seepage (P5)
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   void writeOutput();
-  void writeDiagnostics();
+  void writeDiagnostics(const MaterialPoints& points);  ///< points: all (gathered) points
   // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
   void openBoundaryFluxLog();
   void accumulateBoundaryFluxes();
@@ -82,15 +84,27 @@ class Simulation {
   void log(const std::string& line);
   void applyStageMaterialChanges(const StageSpec& stage);
   void writeInitialOutput();
-  void writeProbes();
   // issue P8: physical guards (SimulationGuards.cpp)
   void beginStageGuards(const StageSpec& stage);
   void checkGuards(const StageSpec& stage);
+  void writeProbes();                              ///< gathers the points
+  void writeProbes(const MaterialPoints& points);  ///< all (gathered) points
 
   Deck deck_;
   RunOptions options_;
   Mesh mesh_;
   MaterialPoints points_;
+  // ---- several MPI ranks (doc/parallel.md "Output and the argine program"): the explicit
+  // stages run distributed; rank 0 gathers the points by id and writes every file.
+  std::unique_ptr<RankDecomposition> ranks_;  ///< null on one rank; outlives solver_
+  bool points_replicated_ = false;
+  long long total_points_ = 0;  ///< points over all ranks at the last output  ///< every rank holds
+                                ///< all points (an implicit stage)
+  bool distributed() const { return ranks_ != nullptr; }
+  bool writes() const;                            ///< this rank writes the files (rank 0)
+  MaterialPoints gatheredPoints() const;          ///< all points on rank 0 (collective)
+  long long totalPoints() const;                  ///< points over all ranks (collective)
+  std::vector<NodalField> gatheredNodalFields();  ///< complete nodal fields on rank 0
   std::unique_ptr<ExplicitTwoPhaseSolver> solver_;
   std::unique_ptr<ResultsWriter> results_;
   std::unique_ptr<CsvWriter> diagnostics_;

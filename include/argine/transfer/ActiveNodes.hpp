@@ -19,6 +19,13 @@ class ActiveNodes {
   /// Lists every node of every element that holds a located point (element >= 0).
   void rebuild(const Mesh& mesh, const MaterialPoints& points);
 
+  /// The same, plus the listed nodes (e.g. the nodes shared with other MPI ranks, which must
+  /// be cleared and solved on every rank holding them).
+  void rebuild(const Mesh& mesh, const MaterialPoints& points,
+               Kokkos::View<const int*, MemSpace> also);
+  /// The nodes of `from` whose `mask` entry is non-zero (e.g. the nodes this rank owns).
+  void assignMasked(const ActiveNodes& from, Kokkos::View<const unsigned char*, MemSpace> mask);
+
   /// Node indices, ascending; entries [0, count()) are valid.
   Kokkos::View<const int*, MemSpace> nodes() const { return nodes_; }
   /// Number of active nodes.

@@ -1,0 +1,87 @@
+#include "argine/physics/DistributedStep.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "argine/physics/HydraulicBoundaryStep.hpp"
+#include "argine/physics/StabilityCheck.hpp"
+#include "argine/physics/TimeStepControl.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/TwoPhaseTransfer.hpp"
+
+namespace argine {
+
+void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& g) {
+  exchange.sum({nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
+                nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i),
+                nodalField(g.volume_liquid_i), nodalField(g.momentum_solid_i),
+                nodalField(g.momentum_liquid_i), nodalField(g.force_mixture_i),
+                nodalField(g.force_liquid_i)});
+}
+
+void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& g) {
+  exchange.sum({nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)});
+}
+
+void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& f) {
+  exchange.sum(
+      {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
+}
+
+void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
+                  std::vector<Real>& scratch) {
+  Real* fixed[] = {&sums.kinetic_solid,       &sums.kinetic_liquid,
+                   &sums.liquid_mass,         &sums.non_finite_state,
+                   &sums.non_finite_velocity, &sums.lost,
+                   &sums.changed_element,     &sums.emigrants};
+  constexpr std::size_t kFixed = sizeof fixed / sizeof fixed[0];
+  const std::size_t n = kFixed + also.size();
+  if (scratch.size() < n) scratch.resize(n);
+  for (std::size_t k = 0; k < kFixed; ++k) scratch[k] = *fixed[k];
+  std::copy(also.begin(), also.end(), scratch.begin() + kFixed);
+  MPI_Allreduce(MPI_IN_PLACE, scratch.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
+  for (std::size_t k = 0; k < kFixed; ++k) *fixed[k] = scratch[k];
+  std::copy(scratch.begin() + kFixed, scratch.begin() + n, also.begin());
+}
+
+void sumOverRanks(MPI_Comm comm, std::vector<Real>& values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM,
+                comm);
+}
+
+long long sumOverRanks(MPI_Comm comm, long long value) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  return value;
+}
+
+TimeStepChoice globalTimeStep(MPI_Comm comm, const TimeStepChoice& local) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  // Every rank's choice, as bytes (a trivially copyable struct); the buffer only grows.
+  static_assert(std::is_trivially_copyable_v<TimeStepChoice>);
+  static thread_local std::vector<TimeStepChoice> all;
+  all.resize(size);
+  MPI_Allgather(&local, sizeof local, MPI_BYTE, all.data(), sizeof local, MPI_BYTE, comm);
+  int best = 0;
+  for (int r = 1; r < size; ++r)
+    if (all[r].time_step < all[best].time_step) best = r;
+  TimeStepChoice choice = all[best];
+  if (best != rank) choice.point = -1;
+  return choice;
+}
+
+std::vector<int> globalActiveElements(MPI_Comm comm, const MaterialPoints& points, int elements) {
+  std::vector<unsigned char> flag(elements, 0);
+  const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
+  for (int p = 0; p < points.count; ++p)
+    if (element(p) >= 0) flag[element(p)] = 1;
+  MPI_Allreduce(MPI_IN_PLACE, flag.data(), elements, MPI_UNSIGNED_CHAR, MPI_BOR, comm);
+  std::vector<int> active;
+  for (int e = 0; e < elements; ++e)
+    if (flag[e]) active.push_back(e);
+  return active;
+}
+
+}  // namespace argine

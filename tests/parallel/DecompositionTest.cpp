@@ -1,0 +1,114 @@
+// Element partition, nodal exchange and point migration over the ranks of MPI_COMM_WORLD
+// (any number of ranks, 1 included; the suite runs them on 1 and on 2 ranks).
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include "../transfer/TestScenes.hpp"
+#include "argine/parallel/NodalExchange.hpp"
+#include "argine/parallel/PointMigration.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
+#include "argine/points/MaterialPoints.hpp"
+
+namespace argine {
+namespace {
+
+int worldSize() {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+TEST(ElementBisection, SplitsARowByWeight) {
+  // Four elements in a row at x = 0, 1, 2, 3. Equal weights, two parts: the first half of
+  // the weight (2 of 4) goes to part 0. Weights 3, 1, 1, 1 (total 6, target 3): element 0
+  // alone reaches half the weight.
+  const std::vector<Real> x{0, 1, 2, 3}, y{0, 0, 0, 0};
+  EXPECT_EQ(bisectElements(x, y, {1, 1, 1, 1}, 2), (std::vector<int>{0, 0, 1, 1}));
+  EXPECT_EQ(bisectElements(x, y, {3, 1, 1, 1}, 2), (std::vector<int>{0, 1, 1, 1}));
+  // Four parts of four equal elements: one each, in order along x.
+  EXPECT_EQ(bisectElements(x, y, {1, 1, 1, 1}, 4), (std::vector<int>{0, 1, 2, 3}));
+  // A column (taller than wide) is cut across y.
+  EXPECT_EQ(bisectElements(y, x, {1, 1, 1, 1}, 2), (std::vector<int>{0, 0, 1, 1}));
+}
+
+TEST(RankDecomposition, SharedNodesSumOverRanks) {
+  // 8 x 2 quads of 1 m: with equal weights each rank owns a block of columns. Every rank
+  // adds (rank + 1) at each node of its elements; after the exchange a node's value is the
+  // sum of (r + 1) over the ranks r whose elements touch it, counted from the partition.
+  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  const auto& owner = ranks.elementOwners();
+  const auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
+  std::vector<std::vector<int>> touching(mesh.numNodes());
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int a = 0; a < 4; ++a) {
+      auto& list = touching[C(e, a)];
+      if (std::find(list.begin(), list.end(), owner[e]) == list.end()) list.push_back(owner[e]);
+    }
+  Kokkos::View<Real*, MemSpace> scalar("scalar", mesh.numNodes());
+  Kokkos::View<Real* [2], MemSpace> vector("vector", mesh.numNodes());
+  for (int i = 0; i < mesh.numNodes(); ++i)
+    if (std::find(touching[i].begin(), touching[i].end(), ranks.rank()) != touching[i].end()) {
+      scalar(i) = ranks.rank() + 1;
+      vector(i, 0) = 10 * (ranks.rank() + 1);
+      vector(i, 1) = -(ranks.rank() + 1);
+    }
+  NodalExchange exchange(ranks);
+  exchange.sum({nodalField(scalar), nodalField(vector)});
+  int shared = 0;
+  for (int i = 0; i < mesh.numNodes(); ++i) {
+    if (std::find(touching[i].begin(), touching[i].end(), ranks.rank()) == touching[i].end())
+      continue;
+    Real expected = 0;
+    for (const int r : touching[i]) expected += r + 1;
+    shared += touching[i].size() > 1 ? 1 : 0;
+    EXPECT_EQ(scalar(i), expected) << "node " << i;
+    EXPECT_EQ(vector(i, 0), 10 * expected);
+    EXPECT_EQ(vector(i, 1), -expected);
+  }
+  EXPECT_EQ(shared, static_cast<int>(ranks.sharedNodes().size()));
+  if (worldSize() == 2) {
+    EXPECT_EQ(ranks.sharedNodes().size(), 3u);  // one vertical cut line
+  }
+  // Every node is owned by exactly one rank.
+  Kokkos::View<Real*, MemSpace> owned("owned", mesh.numNodes());
+  const auto mask = ranks.nodeOwnedView();
+  for (int i = 0; i < mesh.numNodes(); ++i) owned(i) = mask(i);
+  MPI_Allreduce(MPI_IN_PLACE, owned.data(), mesh.numNodes(), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(owned(i), 1.0) << "node " << i;
+}
+
+TEST(PointMigration, PointsGoToTheOwnerOfTheirElementWithAllFields) {
+  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  MaterialPoints points = test::seedUniform(mesh);
+  const int total = points.count;
+  for (int p = 0; p < points.count; ++p) {  // recognisable values in every field kind
+    points.pressure_liquid(p) = 1000.0 + points.id(p);
+    points.stress_effective(p, XY) = -0.5 * points.id(p);
+    points.plastic_state(p) = points.id(p) % 3;
+  }
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  keepOwnedPoints(ranks, points);
+  // Move every point one element to the right (the last column wraps to the first): a point
+  // of a border column enters the next rank's elements.
+  for (int p = 0; p < points.count; ++p) {
+    const int e = points.element(p);
+    points.element(p) = (e % 8 == 7) ? e - 7 : e + 1;
+  }
+  const MigrationCounts moved = migratePoints(ranks, points);
+  long long count = points.count;
+  MPI_Allreduce(MPI_IN_PLACE, &count, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(count, total);
+  if (worldSize() > 1) {
+    EXPECT_GT(moved.total, 0);
+  }
+  for (int p = 0; p < points.count; ++p) {
+    EXPECT_EQ(ranks.elementOwners()[points.element(p)], ranks.rank());
+    EXPECT_EQ(points.pressure_liquid(p), 1000.0 + points.id(p));
+    EXPECT_EQ(points.stress_effective(p, XY), -0.5 * points.id(p));
+    EXPECT_EQ(points.plastic_state(p), points.id(p) % 3);
+  }
+}
+
+}  // namespace
+}  // namespace argine
