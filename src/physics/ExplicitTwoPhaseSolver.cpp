@@ -57,7 +57,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
   checkMaterialsForExplicitSolver(materials);
   table_ = MaterialTable(materials);
-  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -129,16 +129,9 @@ const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
 // ------------------------------------------------------------------ several ranks
 
 void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) {
-  for (int m = 0; m < table_.count(); ++m) {
-    const auto& locking = table_.host(m).locking;
-    if (locking.volumetric_strain == IncrementAveraging::Nodal ||
-        locking.liquid_pressure == IncrementAveraging::Nodal)
-      throw InputError("Materials/Locking Mitigation",
-                       "element averaging on several MPI ranks (nodal averaging is not "
-                       "distributed yet)");
-  }
   ranks_ = &decomposition;
   exchange_ = std::make_unique<NodalExchange>(decomposition);
+  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   keepOwnedPoints(decomposition, points_);
   rates_.allocate(points_.count);
   evaluatePointShapes(mesh_, points_, shapes_);

@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -27,7 +28,7 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
                         Kokkos::View<const Real*, MemSpace> weight_p,
                         Kokkos::View<Real*, MemSpace> value_p,
                         Kokkos::View<Real* [2], MemSpace> element_sums,
-                        Kokkos::View<Real* [2], MemSpace> node_sums) {
+                        Kokkos::View<Real* [2], MemSpace> node_sums, NodalExchange* exchange) {
   const int count = points.count;
   const auto element_p = points.element;
   const auto shape_p = shapes.shape_p;
@@ -63,6 +64,9 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
       });
   KE::contribute(element_sums, element_sv);
   KE::contribute(node_sums, node_sv);
+  // Several ranks: a node shared with another rank also has that rank's points in its sums.
+  // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
+  if (exchange) exchange->sum({nodalField(node_sums)});
   Kokkos::parallel_for(
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int mode = mode_p(p);
@@ -84,7 +88,9 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
 
 }  // namespace
 
-VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes) {
+VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
+                                         NodalExchange* exchange)
+    : exchange_(exchange) {
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
     strain_ = strain_ || material.locking.volumetric_strain != IncrementAveraging::None;
@@ -136,7 +142,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
                        : flux_divergence_p(p);
         });
     averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                       element_sums_, node_sums_);
+                       element_sums_, node_sums_, exchange_);
     Kokkos::parallel_for(
         "averaging_liquid_out", Kokkos::RangePolicy<ExecSpace>(0, count),
         KOKKOS_LAMBDA(const int p) {
@@ -156,7 +162,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
         value_p(p) = strain_increment_p(p, XX) + strain_increment_p(p, YY);
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_);
+                     element_sums_, node_sums_, exchange_);
   Kokkos::parallel_for(
       "averaging_strain_out", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         if (mode_p(p) == kNone || element_p(p) < 0) return;
@@ -203,7 +209,7 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
         value_p(p) = pts.pressure_liquid(p) - old_p(p);
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_);
+                     element_sums_, node_sums_, exchange_);
   Kokkos::parallel_for(
       "averaging_pressure_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {

@@ -190,8 +190,8 @@ class ExplicitTwoPhaseSolver {
   /// points), then each step completes the nodal sums at the shared nodes, reduces the
   /// sums and the time step over the ranks and migrates the points that cross into another
   /// rank's elements. Collective: every rank calls the same solver functions in the same
-  /// order. Call once, before the first beginStage. InputError for a material with nodal
-  /// volumetric averaging (not distributed yet).
+  /// order. Call before the first beginStage (again after an implicit stage that gathered
+  /// the points).
   void distribute(const RankDecomposition& decomposition);
   /// The decomposition (nullptr on one rank without distribute()).
   const RankDecomposition* decomposition() const { return ranks_; }

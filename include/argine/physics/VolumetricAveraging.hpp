@@ -31,6 +31,7 @@ namespace argine {
 
 class ActiveNodes;
 class MaterialTable;
+class NodalExchange;
 struct MaterialPoints;
 struct PointRates;
 struct PointShapes;
@@ -39,8 +40,11 @@ class VolumetricAveraging {
  public:
   VolumetricAveraging() = default;
   /// Scratch for a mesh of `elements` elements and `nodes` nodes, allocated only when a
-  /// material of `table` asks for an averaging.
-  VolumetricAveraging(const MaterialTable& table, int elements, int nodes);
+  /// material of `table` asks for an averaging. On several MPI ranks, `exchange` completes
+  /// the nodal sums at the nodes shared with other ranks (an element, and so its element
+  /// sums, belongs to one rank only).
+  VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
+                      NodalExchange* exchange = nullptr);
 
   /// Whether any material averages the volumetric strain / the liquid pressure increment.
   bool averagesStrain() const { return strain_; }
@@ -61,6 +65,7 @@ class VolumetricAveraging {
  private:
   bool strain_ = false;
   bool pressure_ = false;
+  NodalExchange* exchange_ = nullptr;               ///< several ranks: completes the node sums
   Kokkos::View<Real*, MemSpace> value_point_;       ///< per point: the quantity, then its average
   Kokkos::View<Real*, MemSpace> weight_point_;      ///< per point: its weight (0: not averaged)
   Kokkos::View<int*, MemSpace> mode_point_;         ///< per point: IncrementAveraging as int
