@@ -7,6 +7,9 @@
 # sanitizer report stops the fuzzer with exit code != 0 and leaves the input in
 # build-fuzz/artifacts/<target>/ (reproduce: build-fuzz/fuzz/fuzz_<target>_reader FILE).
 # New inputs found are kept in build-fuzz/corpus/<target>/ (seeds: fuzz/corpus/<target>/).
+# ARGINE_FUZZ_RUNS=N makes a run reproducible (the test suite's fuzz tests): N inputs from
+# the fixed random seed ARGINE_FUZZ_SEED (default 1), starting from the committed seeds
+# only (a fresh corpus), with SECONDS as a time limit on top.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${ARGINE_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -26,14 +29,20 @@ run() {  # run TARGET SECONDS
   local binary="$build_dir/fuzz/fuzz_${target}_reader"
   local corpus="$build_dir/corpus/$target" artifacts="$build_dir/artifacts/$target/"
   local work="$build_dir/work/$target"
+  local bounds=(-max_total_time="$seconds")
+  if [[ -n ${ARGINE_FUZZ_RUNS:-} ]]; then
+    corpus="$build_dir/corpus-reproducible/$target"
+    rm -rf "$corpus"
+    bounds+=(-runs="$ARGINE_FUZZ_RUNS" -seed="${ARGINE_FUZZ_SEED:-1}")
+  fi
   mkdir -p "$corpus" "$artifacts" "$work"
-  echo "fuzz: $target for ${seconds} s (seeds fuzz/corpus/$target, corpus $corpus)"
+  echo "fuzz: $target, ${bounds[*]} (seeds fuzz/corpus/$target, corpus $corpus)"
   # Open MPI and Trilinos are not instrumented; LeakSanitizer suppressions only for them.
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
   LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/sanitizer-suppressions/lsan.supp:print_suppressions=0} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
   ARGINE_FUZZ_WORKDIR="$work" \
-    "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+    "$binary" "${bounds[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
     -print_final_stats=1 -artifact_prefix="$artifacts" "$corpus" "$root/fuzz/corpus/$target"
 }
 

@@ -18,8 +18,11 @@ if [[ $label == sanitize ]]; then
   cmake --build "$build_dir" -j "${ARGINE_JOBS:-$(nproc)}"
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   # Any report stops the test process (-fno-sanitize-recover, halt_on_error) and fails it.
-  # Leaks of Open MPI's and Trilinos' globals are suppressed (the file says which).
-  export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=0
+  # Leaks of Open MPI's and Trilinos' globals are suppressed (the file says which). The
+  # suppressions match frames of the allocation stack; the fast (frame-pointer) unwinder stops
+  # at the first frame inside these libraries (built without frame pointers), so the slow
+  # unwinder is needed for the stack to reach the library a suppression names.
+  export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=0:fast_unwind_on_malloc=0
   export LSAN_OPTIONS=suppressions=$root/scripts/sanitizer-suppressions/lsan.supp:print_suppressions=0
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   cd "$build_dir"

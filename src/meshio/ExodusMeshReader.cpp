@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "argine/core/Error.hpp"
+#include "argine/meshio/ExodusLayoutCheck.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
 #include "argine/meshio/Geometry2D.hpp"
 #include "argine/meshio/NetcdfHeaderCheck.hpp"
@@ -160,6 +161,7 @@ Mesh readExodusMesh(const std::string& path) {
   int io_ws = 0;
   float version = 0;
   checkNetcdfClassicHeader(path);  // (P8) before libnetcdf trusts its counts
+  checkExodusLayout(path);         // (P8) before libexoIIv2c trusts the variables' shapes
   const int exoid = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (exoid < 0) throw InputError(path, "cannot open as an Exodus II file (ex_open failed)");
   ExodusFile file{exoid};

@@ -2,6 +2,7 @@
 // (the reader reorders it, and the mesh then overlaps), empty, truncated and non-Exodus
 // files. Each gives an InputError naming the file.
 #include <gtest/gtest.h>
+#include <netcdf.h>
 
 #include <array>
 #include <fstream>
@@ -122,6 +123,67 @@ TEST(HostileMesh, ADamagedNetcdfHeaderFoundByFuzzingIsRejectedBeforeNetcdfOpensI
     EXPECT_EQ(error.where(), path);
     EXPECT_NE(std::string(error.what()).find("damaged netCDF header"), std::string::npos)
         << error.what();
+  }
+}
+
+/// Replaces variable `name` of an Exodus file by an integer variable of the same name over
+/// `dimensions` (the old one is renamed aside), as a damaged or hostile writer could.
+void redefineVariable(const std::string& path, const std::string& name,
+                      const std::vector<std::string>& dimensions) {
+  int ncid = -1, varid = -1;
+  ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &ncid), NC_NOERR);
+  ASSERT_EQ(nc_redef(ncid), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(ncid, name.c_str(), &varid), NC_NOERR);
+  ASSERT_EQ(nc_rename_var(ncid, varid, (name + "_old").c_str()), NC_NOERR);
+  std::vector<int> dims;
+  std::size_t entries = 1;
+  for (const auto& dimension : dimensions) {
+    int id = -1;
+    std::size_t length = 0;
+    ASSERT_EQ(nc_inq_dimid(ncid, dimension.c_str(), &id), NC_NOERR) << dimension;
+    ASSERT_EQ(nc_inq_dimlen(ncid, id, &length), NC_NOERR);
+    dims.push_back(id);
+    entries *= length;
+  }
+  ASSERT_EQ(
+      nc_def_var(ncid, name.c_str(), NC_INT, static_cast<int>(dims.size()), dims.data(), &varid),
+      NC_NOERR);
+  ASSERT_EQ(nc_enddef(ncid), NC_NOERR);
+  const std::vector<int> values(entries, 1);  // node 1, id 1: valid values, wrong shape
+  ASSERT_EQ(nc_put_var_int(ncid, varid, values.data()), NC_NOERR);
+  ASSERT_EQ(nc_close(ncid), NC_NOERR);
+}
+
+TEST(HostileMesh, VariablesOfAnotherShapeThanTheExodusLayoutAreRejectedBeforeExodusReadsThem) {
+  // fuzz/fuzz_exodus_reader's heap corruption (CI, session 4): libexoIIv2c sizes its id
+  // buffer from the dimension num_el_blk and then reads the whole variable eb_prop1. With
+  // eb_prop1 over num_nodes (25 entries for 1 block) it wrote past the buffer; the same holds
+  // for a block's connectivity and a set's entries, read into buffers argine sizes.
+  GeneratorSpec generator;
+  generator.element_size = 0.5;
+  const Mesh mesh = generateMesh(generator);
+  struct Case {
+    std::string variable;
+    std::vector<std::string> dimensions;
+  };
+  const std::vector<Case> cases{{"eb_prop1", {"num_nodes"}},
+                                {"connect1", {"num_nodes", "num_nod_per_el1"}},
+                                {"node_ns1", {"num_nodes"}}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.variable);
+    const std::string path = scratchFile("layout_" + c.variable + ".exo");
+    writeExodusMesh(path, mesh);
+    ASSERT_NO_THROW(readExodusMesh(path));
+    redefineVariable(path, c.variable, c.dimensions);
+    try {
+      readExodusMesh(path);
+      ADD_FAILURE() << c.variable << " of another shape was accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.where(), path);
+      EXPECT_NE(std::string(error.what()).find("variable " + c.variable + " has"),
+                std::string::npos)
+          << error.what();
+    }
   }
 }
 
