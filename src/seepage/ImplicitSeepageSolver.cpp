@@ -536,7 +536,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
       if (!s.settings.adaptive || dt <= s.settings.min_step) {
         std::ostringstream out;
         out << "implicit seepage: the step of " << dt << " s at t = " << s.time
-            << " s did not converge (Picard iterations and active-set passes exhausted)";
+            << " s did not converge (Picard/Newton iterations and active-set passes exhausted)";
         throw RunError(out.str());
       }
       s.next_step = std::max(0.5 * dt, s.settings.min_step);

@@ -109,7 +109,7 @@ KOKKOS_INLINE_FUNCTION Real darcyMobility(const PointMaterial& material, Real pr
 //   dm/dp = m / K_L + rho_L (dk/dp) / (rho_L0 g_k),   drho_L/dp = rho_L / K_L (4.13), (N5)
 //   dk/dp = -k_sat dk_r/ds  for s = -p_L > 0,  0 for s <= 0 or a constant HCC.        (N6)
 // N3 carries the relative permeability's slope contracted with the point's flux gradient d
-// (the liquid mass balance 4.12 with Darcy's 4.5: the flux -m d); it is what makes the
+// (the liquid mass balance 4.12 with Darcy's law 4.2-4.3: the flux -m d); it makes the
 // Jacobian non-symmetric. N4 and the m/K_L of N5 are the liquid compressibility's share
 // (relative size p/K_L: tiny, but exact derivatives keep the convergence quadratic).
 
