@@ -382,7 +382,6 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   cacheOldLevel(p_old);
 
   std::vector<Real> residual(dofs()), terms_scale(dofs()), s, f;
-
   // R = storage/dt + theta F(p) + (1 - theta) F(p_old) - Q (Q on free supply nodes only).
   auto evaluate = [&]() {
     storageAndFlux(p, s, f);
@@ -425,7 +424,7 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
       // once the residual meets the mass tolerance nothing is cut (round-off noise).
       // Picard keeps its plain updates (its results do not change).
       constexpr int kMaxCuts = 6;
-      const Real converged_residual = std::max(settings.mass_tolerance * scale, mass_floor);
+      Real converged_residual = std::max(settings.mass_tolerance * scale, mass_floor);
       for (int cut = 0; settings.iteration == SeepageIteration::Newton && m > 0 && cut < kMaxCuts &&
                         free_residual > converged_residual && !(free_residual < previous_residual);
            ++cut) {
@@ -437,10 +436,11 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
         freeResidual();
       }
       if (!std::isfinite(free_residual)) break;  // diverged: the step is halved
+      converged_residual = std::max(settings.mass_tolerance * scale, mass_floor);
       previous_residual = free_residual;
       result.residual_norms.push_back(free_residual);
       if (m > 0 && last_update <= settings.pressure_tolerance &&
-          free_residual <= std::max(settings.mass_tolerance * scale, mass_floor)) {
+          free_residual <= converged_residual) {
         converged = true;
         break;
       }

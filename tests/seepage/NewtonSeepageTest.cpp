@@ -198,6 +198,39 @@ TEST(NewtonSeepage, DirectAndGmresSolveTheNonSymmetricSystemAlike) {
   for (std::size_t i = 0; i < pa.size(); ++i) EXPECT_NEAR(pa[i], pb[i], 1e-6);
 }
 
+TEST(NewtonSeepage, SeepageFaceOverPrescribedBaseAsPicard) {
+  // Saturated Mualem column, base p prescribed (artesian: head 1.5 m over a 1 m column), top a
+  // potential seepage face: both iterations hold the top at p = 0, keep the base value, and
+  // reach the same steady p (linear from the base to 0) within 1e-6 Pa (the pressure
+  // tolerance).
+  std::vector<std::vector<Real>> answers;
+  for (const SeepageIteration iteration : {SeepageIteration::Picard, SeepageIteration::Newton}) {
+    SeepageColumn column(10, 0.1, 1.0, mualemSoil(), 0);
+    ImplicitSeepageSolver solver(column.mesh, column.points, column.materials);
+    ImplicitSeepageSpec spec = settings(iteration, 10);
+    spec.adaptive = true;
+    spec.max_step = 1e4;
+    solver.setSettings(spec);
+    solver.setGravity(9.81);
+    const Real base = 1000 * 9.81 * 1.5;
+    SeepageBoundaryConditions conditions;
+    const std::vector<int> bottom = test::sideNodes(column.mesh, "bottom");
+    const std::vector<int> top = test::sideNodes(column.mesh, "top");
+    conditions.addPressures(bottom, std::vector<Real>(bottom.size(), base));
+    conditions.addSupplies(top, std::vector<Real>(top.size(), 0.0), true);
+    solver.setBoundaryConditions(conditions);
+    solver.setNodalPressure([&](Real, Real y) { return base - 1000 * 9.81 * y; });
+    solver.advanceTo(2e4);
+    EXPECT_EQ(solver.heldNodes(), top);
+    const std::vector<Real> p = solver.nodalPressure();
+    for (const int node : top) EXPECT_EQ(p[node], 0.0);
+    for (const int node : bottom) EXPECT_EQ(p[node], base);
+    answers.push_back(p);
+  }
+  for (std::size_t i = 0; i < answers[0].size(); ++i)
+    EXPECT_NEAR(answers[0][i], answers[1][i], 1e-6);
+}
+
 TEST(NewtonSeepage, PondingAndReuseMatrixConserveMass) {
   // Supply 10 x k_sat: the top saturates and is held at p = 0 (the active set around the
   // Newton loop), with the chord variant (Reuse Matrix) too; adaptive steps.
