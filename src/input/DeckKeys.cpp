@@ -444,6 +444,12 @@ ListSchema linearSolverKeys() {
 
 ListSchema implicitSeepageKeys() {
   ListSchema seepage;
+  seepage.add(KeySpec::choice("Nonlinear Solver", Words{"picard", "newton"},
+                              "iteration of each step: picard, the mass-conservative modified "
+                              "Picard (Celia et al. 1990; symmetric matrix), or newton (full "
+                              "Jacobian with the conductivity's pressure derivative: "
+                              "non-symmetric, so not with the cg linear solver)")
+                  .byDefault(std::string("picard")));
   seepage.add(KeySpec::real("Theta", "-",
                             "theta of the time scheme: 1 backward Euler, 0.5 "
                             "Crank-Nicolson")

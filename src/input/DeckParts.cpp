@@ -298,6 +298,13 @@ ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
   spec.mass_tolerance = seepage.real("Mass Tolerance");
   spec.min_suction_fraction = seepage.real("Minimum Suction Fraction");
   spec.linear = parseLinearSolver(seepage.section("Linear Solver"));
+  spec.iteration = seepage.word("Nonlinear Solver") == "newton" ? SeepageIteration::Newton
+                                                                : SeepageIteration::Picard;
+  // CG needs a symmetric positive definite matrix; Newton's Jacobian is not symmetric.
+  if (spec.iteration == SeepageIteration::Newton && spec.linear.solver == "CG")
+    throw InputError(seepage.section("Linear Solver").pathOf("Solver"),
+                     "gmres or direct with Nonlinear Solver: newton (its Jacobian is not "
+                     "symmetric, cg needs a symmetric matrix)");
   return spec;
 }
 

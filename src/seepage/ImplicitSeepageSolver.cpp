@@ -146,26 +146,48 @@ struct ImplicitSeepageSolver::Impl {
     system->sumOverRanks(flux_out);
   }
 
-  /// The Picard matrix C/dt + theta K at the iterate of the last storageAndFlux.
+  /// Liquid point i's share of the iteration matrix at `nodal`, the iterate of the last
+  /// storageAndFlux (its point_p, point_mobility): Picard C/dt + theta K; Newton adds
+  /// theta K' (SeepagePointTerms.hpp N3-N4), the rest of the exact dR/dp.
+  void pointMatrix(std::size_t i, Real dt, const std::vector<Real>& nodal,
+                   Real local[kMaxElementNodes][kMaxElementNodes]) const {
+    const Point& point = liquid_points[i];
+    const PointMaterial& mat = material(point);
+    const Real theta = settings.theta;
+    for (int a = 0; a < nodes_per_element; ++a)
+      for (int b = 0; b < nodes_per_element; ++b) local[a][b] = 0;
+    addPointStorageMatrix(point.shape, nodes_per_element,
+                          point.porosity * point.volume *
+                              storageSlope(mat, point_p[i], settings.min_suction_fraction) / dt,
+                          local);
+    addPointConductivityMatrix(point.shape, nodes_per_element,
+                               theta * point.volume * point_mobility[i], local);
+    if (settings.iteration != SeepageIteration::Newton) return;
+    Real p_local[kMaxElementNodes];
+    for (int a = 0; a < nodes_per_element; ++a) p_local[a] = nodal[point.dof[a]];
+    const Real density = liquidDensity(mat.liquid, point_p[i]);
+    const Real mobility_slope = darcyMobilityPressureDerivative(mat, point_p[i], point_mobility[i]);
+    // N4: m g drho_L/dp with drho_L/dp = rho_L / K_L (4.13).
+    const Real density_slope = point_mobility[i] * gravity * density / mat.liquid.bulk_modulus;
+    addPointFluxJacobianCorrection(point.shape, nodes_per_element, p_local, density * gravity,
+                                   theta * point.volume * mobility_slope,
+                                   theta * point.volume * density_slope, local);
+  }
+
+  /// The iteration matrix (pointMatrix) at the iterate of the last storageAndFlux.
   void assembleMatrix(Real dt) {
     matrix_values.assign(system->entryCount(), 0.0);
-    const Real theta = settings.theta;
     for (std::size_t i = 0; i < liquid_points.size(); ++i) {
       const Point& point = liquid_points[i];
       if (!touchesOwnedRow(point)) continue;
-      const PointMaterial& mat = material(point);
-      Real local[kMaxElementNodes][kMaxElementNodes] = {};
-      addPointStorageMatrix(point.shape, nodes_per_element,
-                            point.porosity * point.volume *
-                                storageSlope(mat, point_p[i], settings.min_suction_fraction) / dt,
-                            local);
-      addPointConductivityMatrix(point.shape, nodes_per_element,
-                                 theta * point.volume * point_mobility[i], local);
+      Real local[kMaxElementNodes][kMaxElementNodes];
+      pointMatrix(i, dt, p, local);
       for (int a = 0; a < nodes_per_element; ++a) {
         const int row = point.dof[a];
         if (!system->owns(row) || isFixed(row)) continue;
         for (int b = 0; b < nodes_per_element; ++b) {
-          if (isFixed(point.dof[b])) continue;  // eliminated: keeps the matrix symmetric
+          // Eliminated: a fixed unknown's update is 0 (keeps Picard's matrix symmetric).
+          if (isFixed(point.dof[b])) continue;
           matrix_values[point.entry[a][b]] += local[a][b];
         }
       }
@@ -258,6 +280,10 @@ ImplicitSeepageSolver::ImplicitSeepageSolver(const Mesh& mesh, MaterialPoints& p
 ImplicitSeepageSolver::~ImplicitSeepageSolver() = default;
 
 void ImplicitSeepageSolver::setSettings(const ImplicitSeepageSpec& settings) {
+  // The deck refuses this pair (DeckParts.cpp); the check covers settings built in code.
+  if (settings.iteration == SeepageIteration::Newton && settings.linear.solver == "CG")
+    throw InputError("Implicit Seepage/Linear Solver/Solver",
+                     "gmres or direct with Nonlinear Solver: newton (non-symmetric Jacobian)");
   impl_->settings = settings;
   impl_->next_step = settings.initial_step;
   impl_->system->setSolver(settings.linear);
@@ -376,16 +402,45 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
     bool converged = false;
     Real last_update = std::numeric_limits<Real>::infinity();
     Real previous_update = std::numeric_limits<Real>::infinity();
-    for (int m = 0; m <= settings.max_picard_iterations; ++m) {
+    result.residual_norms.clear();
+    std::vector<Real> update;
+    Real free_residual = 0, scale = 0, previous_residual = 0;
+    auto freeResidual = [&]() {
       evaluate();
-      Real free_residual = 0, scale = 0;
+      free_residual = 0;
+      scale = 0;
       for (int i = 0; i < dofs(); ++i)
         if (!isFixed(i)) {
           free_residual += std::fabs(residual[i]);
           scale += terms_scale[i];
         }
+    };
+    for (int m = 0; m <= settings.max_picard_iterations; ++m) {
+      freeResidual();
+      // Newton's backtracking: far from the solution (a sharp wetting front, the first
+      // iteration of a step) the full Newton update can raise the residual and, repeated,
+      // diverge; the update is halved (at most kMaxCuts times) until the free residual
+      // falls. Near the solution the full update is taken (quadratic convergence), and
+      // once the residual meets the mass tolerance nothing is cut (round-off noise).
+      // Picard keeps its plain updates (its results do not change).
+      constexpr int kMaxCuts = 6;
+      Real converged_residual = std::max(settings.mass_tolerance * scale, mass_floor);
+      for (int cut = 0; settings.iteration == SeepageIteration::Newton && m > 0 && cut < kMaxCuts &&
+                        free_residual > converged_residual && !(free_residual < previous_residual);
+           ++cut) {
+        for (int i = 0; i < dofs(); ++i) {
+          update[i] *= 0.5;
+          p[i] -= update[i];
+        }
+        last_update *= 0.5;
+        freeResidual();
+      }
+      if (!std::isfinite(free_residual)) break;  // diverged: the step is halved
+      converged_residual = std::max(settings.mass_tolerance * scale, mass_floor);
+      previous_residual = free_residual;
+      result.residual_norms.push_back(free_residual);
       if (m > 0 && last_update <= settings.pressure_tolerance &&
-          free_residual <= std::max(settings.mass_tolerance * scale, mass_floor)) {
+          free_residual <= converged_residual) {
         converged = true;
         break;
       }
@@ -395,7 +450,7 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
       // halve; a slower iteration gets a fresh matrix.
       const bool refactor = !settings.reuse_matrix || m == 0 || last_update > 0.5 * previous_update;
       if (refactor) assembleMatrix(dt);
-      std::vector<Real> rhs(dofs()), update;
+      std::vector<Real> rhs(dofs());
       for (int i = 0; i < dofs(); ++i) rhs[i] = isFixed(i) ? 0.0 : -residual[i];
       result.linear_iterations += system->solve(rhs, update, refactor);
       ++result.picard_iterations;
@@ -481,7 +536,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
       if (!s.settings.adaptive || dt <= s.settings.min_step) {
         std::ostringstream out;
         out << "implicit seepage: the step of " << dt << " s at t = " << s.time
-            << " s did not converge (Picard iterations and active-set passes exhausted)";
+            << " s did not converge (Picard/Newton iterations and active-set passes exhausted)";
         throw RunError(out.str());
       }
       s.next_step = std::max(0.5 * dt, s.settings.min_step);
@@ -524,6 +579,33 @@ void ImplicitSeepageSolver::handOver() {
   Kokkos::deep_copy(s.points.saturation, saturation);
   Kokkos::deep_copy(s.points.conductivity, conductivity);
   Kokkos::deep_copy(s.points.mass_liquid, mass);
+}
+
+SeepageLinearisation ImplicitSeepageSolver::linearise(Real dt, const std::vector<Real>& trial) {
+  Impl& s = *impl_;
+  SeepageLinearisation out;
+  out.unknowns = s.dofs();
+  out.node = s.node_of_dof;
+  std::vector<Real> nodal(s.dofs());
+  for (int i = 0; i < s.dofs(); ++i) nodal[i] = trial.at(s.node_of_dof[i]);
+  const Real theta = s.settings.theta;
+  const std::vector<Real> flux_old = s.flux(s.p);
+  s.cacheOldLevel(s.p);
+  std::vector<Real> storage, flux;
+  s.storageAndFlux(nodal, storage, flux);
+  out.residual.resize(s.dofs());
+  for (int i = 0; i < s.dofs(); ++i)
+    out.residual[i] = storage[i] / dt + theta * flux[i] + (1 - theta) * flux_old[i] - s.supply[i];
+  out.matrix.assign(static_cast<std::size_t>(s.dofs()) * s.dofs(), 0.0);
+  for (std::size_t i = 0; i < s.liquid_points.size(); ++i) {
+    const Impl::Point& point = s.liquid_points[i];
+    Real local[kMaxElementNodes][kMaxElementNodes];
+    s.pointMatrix(i, dt, nodal, local);
+    for (int a = 0; a < s.nodes_per_element; ++a)
+      for (int b = 0; b < s.nodes_per_element; ++b)
+        out.matrix[static_cast<std::size_t>(point.dof[a]) * s.dofs() + point.dof[b]] += local[a][b];
+  }
+  return out;
 }
 
 Real ImplicitSeepageSolver::time() const {

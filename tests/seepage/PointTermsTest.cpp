@@ -120,5 +120,42 @@ TEST(SeepagePointTerms, MinimumSuctionRegularisationForSmallLambda) {
   EXPECT_DOUBLE_EQ(storageSlope(soil, 10.0, 1e-2), 1000 * std::exp(10.0 / 2.2e9) / 2.2e9);
 }
 
+TEST(SeepagePointTerms, ConductivityAndMobilityPressureDerivatives) {
+  // Gardner HCC k = k_sat exp(-alpha s), alpha = 1e-3 1/Pa, k_sat = 1e-5 m/s: at p = -1000 Pa
+  // (s = 1000) dk/dp = -dk/ds = k_sat alpha exp(-1) = 1e-8 x 0.36787944117144233.
+  MaterialSpec spec = test::infiltrationSoil();
+  spec.conductivity.model = ConductivityModel::Gardner;
+  spec.conductivity.gardner_alpha = 1e-3;
+  spec.conductivity.saturated_conductivity = 1e-5;
+  MaterialSpec constant = test::infiltrationSoil();
+  const MaterialTable table(std::vector<MaterialSpec>{spec, constant});
+  const PointMaterial& gardner = table.host(0);
+  EXPECT_NEAR(conductivityPressureDerivative(gardner, -1000.0), 3.6787944117144233e-9, 1e-22);
+  // Saturated (s <= 0) and a constant HCC: no slope.
+  EXPECT_EQ(conductivityPressureDerivative(gardner, 100.0), 0.0);
+  EXPECT_EQ(conductivityPressureDerivative(table.host(1), -1000.0), 0.0);
+  // dm/dp = m / K_L + rho dk/dp / (rho0 g_k). At p = 0 (rho = rho0, k = k_sat, dk/dp = 0):
+  // m = 1e-5 / 9.81 s, dm/dp = m / 2.2e9.
+  const Real m = 1e-5 / 9.81;
+  EXPECT_NEAR(darcyMobilityPressureDerivative(gardner, 0.0, m), m / 2.2e9, 1e-25);
+  // At p = -1000: rho = 1000 exp(-1000/2.2e9); dm/dp = m/K_L + rho 3.6788e-9 / 9810.
+  const Real rho = 1000 * std::exp(-1000 / 2.2e9);
+  EXPECT_NEAR(darcyMobilityPressureDerivative(gardner, -1000.0, m),
+              m / 2.2e9 + rho * 3.6787944117144233e-9 / 9810, 1e-24);
+}
+
+TEST(SeepagePointTerms, NewtonFluxJacobianCorrection) {
+  // Centre of the unit square, nodal p = (0, 4, 4, 0): grad p = (4, 0); rho g = 10, so
+  // d = (4, 10). grad N_a . d = 4 dN_a/dx + 10 dN_a/dy = -7, -3, 7, 3.
+  // Row a: 2 (grad N_a . d) + 4 dN_a/dy = -16, -8, 16, 8; out[a][b] = row_a N_b = row_a / 4.
+  const PointShape shape = centreShape();
+  const Real p[4] = {0, 4, 4, 0};
+  Real out[4][4] = {};
+  addPointFluxJacobianCorrection(shape, 4, p, 10.0, 2.0, 4.0, out);
+  const Real expected[4] = {-4, -2, 4, 2};
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) EXPECT_NEAR(out[a][b], expected[a], 1e-15);
+}
+
 }  // namespace
 }  // namespace argine

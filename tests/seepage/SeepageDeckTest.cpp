@@ -1,6 +1,10 @@
 // The implicit stage's deck block and the boundary node lists resolved from it.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/seepage/SeepageBoundary.hpp"
@@ -50,6 +54,29 @@ TEST(SeepageDeck, MissingSideSetNamesTheCondition) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.where(), "Stages/infiltration/Boundary Conditions/rain/Side Set");
   }
+}
+
+TEST(SeepageDeck, NonlinearSolverKeyDefaultsToPicardAndNewtonRefusesCg) {
+  const std::string dir = ARGINE_SOURCE_DIR "/verification/infiltration_column/";
+  EXPECT_EQ(readDeck(dir + "infiltration_column.yaml").stages.at(0).seepage.iteration,
+            SeepageIteration::Picard);
+  const std::string newton = dir + "infiltration_column_newton.yaml";
+  EXPECT_EQ(readDeck(newton).stages.at(0).seepage.iteration, SeepageIteration::Newton);
+  // The same deck with the cg linear solver: refused, naming the linear solver's key.
+  std::ifstream in(newton);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string gmres = "Solver: gmres";
+  ASSERT_NE(text.find(gmres), std::string::npos);
+  text.replace(text.find(gmres), gmres.size(), "Solver: cg");
+  const auto path = std::filesystem::path(ARGINE_BINARY_DIR) / "seepage_newton_cg.yaml";
+  std::ofstream(path) << text;
+  try {
+    readDeck(path.string());
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where(), "Stages/infiltration/Implicit Seepage/Linear Solver/Solver");
+  }
+  std::filesystem::remove(path);
 }
 
 }  // namespace

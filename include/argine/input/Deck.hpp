@@ -85,7 +85,14 @@ struct LinearSolverSpec {
   int sweeps = 2;                                     ///< RELAXATION sweeps / CHEBYSHEV degree
 };
 
+/// The iteration of the implicit seepage path's non-linear step (ImplicitSeepageSolver.hpp).
+enum class SeepageIteration {
+  Picard,  ///< modified Picard (Celia et al. 1990): C/dt + theta K(p)
+  Newton,  ///< Newton: C/dt + theta (K(p) + dK/dp . (grad p + rho_L g e_y)), non-symmetric
+};
+
 struct ImplicitSeepageSpec {
+  SeepageIteration iteration = SeepageIteration::Picard;  ///< Nonlinear Solver
   Real theta = 1;                      ///< 1: backward Euler, 1/2: Crank-Nicolson
   Real initial_step = 1;               ///< first time step (s)
   Real min_step = 1e-6;                ///< below this a failed step stops the run (s)

@@ -15,6 +15,19 @@
 /// around Picard (SeepageBoundary.hpp). The step adapts to the Picard iteration count and the
 /// largest saturation change; a step that does not converge is halved and redone.
 ///
+/// `Nonlinear Solver: newton` (ImplicitSeepageSpec::iteration) replaces the Picard matrix by
+/// the full Jacobian of the same residual (SeepagePointTerms.hpp, N1-N6):
+///
+///   (C^m/dt + theta (K^m + K'^m)) dp = -R(p^m),   K'_ab = sum_p V N_b dm/dp grad N_a . d_p
+///                                                         + (liquid compressibility terms),
+///
+/// d_p = grad p + rho_L g e_y the point's flux gradient: non-symmetric, hence GMRES or the
+/// direct solver (CG is refused by the deck). The storage slope C is Picard's (with the
+/// minimum-suction regularisation, exact above s_reg), so Newton is exact, and converges
+/// quadratically, wherever every point's suction is 0 or above s_reg. The same loop, tolerances,
+/// active set, prescribed and held nodes, adaptive step and Reuse Matrix (a chord iteration
+/// on the Jacobian: modified Newton) serve both; only the matrix differs.
+///
 /// Parallel layout: Tpetra rows (active nodes) are split in contiguous blocks over the ranks
 /// of `comm`; each rank assembles its own rows from the points touching them (the mesh and
 /// the points are replicated on every rank for now), Belos + Ifpack2 solve, the update is
@@ -40,12 +53,23 @@ struct MaterialPoints;
 /// What one time step did.
 struct SeepageStepResult {
   bool converged = false;
-  int picard_iterations = 0;  ///< over all active-set passes
+  int picard_iterations = 0;  ///< non-linear (Picard or Newton) iterations, all passes
   int active_set_passes = 0;  ///< 1 when no switch changed
   int linear_iterations = 0;  ///< Krylov iterations over all Picard iterations
   Real max_saturation_change = 0;
   Real inflow = 0;          ///< liquid mass through the boundary over the step (kg/m)
   Real storage_change = 0;  ///< change of the points' liquid mass over the step (kg/m)
+  /// Free-node residual sum_i |R_i| (kg/s per m) at each iterate of the last active-set pass,
+  /// the starting one first (the convergence history).
+  std::vector<Real> residual_norms;
+};
+
+/// The residual and the iteration matrix of a step at trial pressures (linearise()).
+struct SeepageLinearisation {
+  int unknowns = 0;            ///< active nodes
+  std::vector<int> node;       ///< mesh node of each unknown
+  std::vector<Real> residual;  ///< R(p) by unknown (kg/s per m)
+  std::vector<Real> matrix;    ///< dense, row-major unknowns x unknowns
 };
 
 /// Running totals of a solver since construction.
@@ -93,6 +117,13 @@ class ImplicitSeepageSolver {
   /// Hands the state to the points: p_L interpolated from the nodes, rho_L (4.13), S_L, k
   /// (SWRC, HCC), M_L = n V S_L rho_L: the points then hold exactly liquidMass().
   void handOver();
+
+  /// For tests and diagnostics (one rank): the residual R of a step of length dt from the
+  /// current state (the old level) at the trial nodal p_L (by mesh node, as nodalPressure()),
+  /// and the matrix of the settings' Nonlinear Solver there (Picard: C/dt + theta K; Newton:
+  /// the Jacobian dR/dp), before any boundary elimination (no node fixed or held). Leaves
+  /// the state unchanged.
+  SeepageLinearisation linearise(Real dt, const std::vector<Real>& trial);
 
   Real time() const;
   void setTime(Real time);

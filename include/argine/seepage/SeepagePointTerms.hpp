@@ -97,6 +97,68 @@ KOKKOS_INLINE_FUNCTION Real darcyMobility(const PointMaterial& material, Real pr
                            saturationAndConductivity(material, pressure).conductivity);
 }
 
+// ---- Newton (ImplicitSeepageSolver.hpp, doc/theory.md "Newton iteration")
+//
+// The flux term of a point (N_a, grad N_a at x_p; p_p = sum_b N_b p_b):
+//   F_a = V m(p_p) grad N_a . d,   d = grad p + rho_L(p_p) g e_y,                   (N1)
+//   m(p) = rho_L(p) k(p) / (rho_L0 g_k)                 (Darcy mobility, 4.13 and the HCC)
+// Its exact derivative by the nodal p_b (dp_p/dp_b = N_b, d(grad p)/dp_b = grad N_b):
+//   dF_a/dp_b = V m grad N_a . grad N_b                          (Picard's K)         (N2)
+//             + V N_b dm/dp (grad N_a . d)                       (non-symmetric)      (N3)
+//             + V N_b m g drho_L/dp dN_a/dy                      (non-symmetric)      (N4)
+//   dm/dp = m / K_L + rho_L (dk/dp) / (rho_L0 g_k),   drho_L/dp = rho_L / K_L (4.13), (N5)
+//   dk/dp = -k_sat dk_r/ds  for s = -p_L > 0,  0 for s <= 0 or a constant HCC.        (N6)
+// N3 carries the relative permeability's slope contracted with the point's flux gradient d
+// (the liquid mass balance 4.12 with Darcy's law 4.2-4.3: the flux -m d); it makes the
+// Jacobian non-symmetric. N4 and the m/K_L of N5 are the liquid compressibility's share
+// (relative size p/K_L: tiny, but exact derivatives keep the convergence quadratic).
+
+/// dk/dp_L (m/s/Pa) of the HCC at p_L (N6): -k_sat dk_r/ds (relativeConductivitySuction-
+/// Derivative, the materials room's slope) for an unsaturated material at suction s > 0;
+/// 0 when saturated (s <= 0, k_r flat at k_r(S_max)) and for a saturated material.
+/// Also 0 where the slope is not finite: Mualem's dk_r/dS grows without bound as S -> 1, and
+/// at a suction so small that S^(1/lambda*) rounds to 1 the chain rule gives inf x (tiny or
+/// 0) = inf or NaN (the exact limit is 0 for the van Genuchten-Mualem pair, lambda = lambda*
+/// > 1/2); the point then contributes Picard's matrix, the residual being unchanged.
+KOKKOS_INLINE_FUNCTION Real conductivityPressureDerivative(const PointMaterial& material,
+                                                           Real pressure) {
+  if (material.phase != PhaseModel::Unsaturated) return 0;
+  const Real suction = suctionOfPressure(pressure);
+  if (suction <= 0) return 0;
+  const Real slope =
+      -material.conductivity.saturated_conductivity *
+      relativeConductivitySuctionDerivative(material.conductivity, material.retention, suction);
+  return kmath::fabs(slope) < kmath::infinity() ? slope : 0;  // false for inf and NaN
+}
+
+/// dm/dp_L (s/Pa) of the Darcy mobility (N5), with m = darcyMobilityFrom(.., k) already
+/// evaluated at p_L.
+KOKKOS_INLINE_FUNCTION Real darcyMobilityPressureDerivative(const PointMaterial& material,
+                                                            Real pressure, Real mobility) {
+  return mobility / material.liquid.bulk_modulus +
+         liquidDensity(material.liquid, pressure) *
+             conductivityPressureDerivative(material, pressure) /
+             (material.liquid.density * kStandardGravity);
+}
+
+/// Adds the non-symmetric part of the point's flux Jacobian, N3 + N4, to out[a][b]:
+///   out[a][b] += N_b (mobility_slope (grad N_a . d) + density_slope dN_a/dy),
+/// d = grad p + rho_L g e_y from the nodal pressures p[b] (as addPointFluxVector);
+/// mobility_slope = theta V dm/dp, density_slope = theta V m g drho_L/dp.
+KOKKOS_INLINE_FUNCTION void addPointFluxJacobianCorrection(
+    const PointShape& shape, int nodes, const Real* p, Real density_gravity, Real mobility_slope,
+    Real density_slope, Real out[kMaxElementNodes][kMaxElementNodes]) {
+  Real driving[kDim] = {0, density_gravity};  // grad p + rho_L g e_y
+  for (int b = 0; b < nodes; ++b)
+    for (int d = 0; d < kDim; ++d) driving[d] += p[b] * shape.gradient[b][d];
+  for (int a = 0; a < nodes; ++a) {
+    Real dot = 0;
+    for (int d = 0; d < kDim; ++d) dot += shape.gradient[a][d] * driving[d];
+    const Real row = mobility_slope * dot + density_slope * shape.gradient[a][1];
+    for (int b = 0; b < nodes; ++b) out[a][b] += row * shape.value[b];
+  }
+}
+
 /// Adds coefficient N_a N_b to out[a][b] for the point's nodes (consistent storage matrix:
 /// coefficient = n V d(S_L rho_L)/dp / dt).
 KOKKOS_INLINE_FUNCTION void addPointStorageMatrix(const PointShape& shape, int nodes,
