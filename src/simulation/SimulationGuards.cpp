@@ -1,6 +1,7 @@
 // Simulation's part of the physical guards (issue P8; the guards themselves are in
 // RunGuards.cpp): what the run knows after each explicit step, handed to RunGuards; warnings
-// go to stderr (also with --quiet) and to the stage log.
+// go to stderr (also with --quiet; on several ranks from rank 0 only, the diagnostics being
+// the same on every rank) and to the stage log.
 #include <cstdio>
 
 #include "argine/boundary/HydraulicConditions.hpp"
@@ -24,7 +25,7 @@ void Simulation::checkGuards(const StageSpec& stage) {
   const GuardPlace place{solver_->time(), d.step, stage.name};
   auto warn = [&](const std::string& line) {
     if (line.empty()) return;
-    std::fprintf(stderr, "argine: warning: %s\n", line.c_str());
+    if (writes()) std::fprintf(stderr, "argine: warning: %s\n", line.c_str());
     stage_log_.push_back("warning: " + line);
   };
   if (d.lost_points > guards_->removedPoints()) {
