@@ -153,12 +153,7 @@ struct Infiltration {
     spec.max_step = 20;
     solver.setSettings(spec);
     solver.setGravity(9.81);
-    const SideSetNodes top = sideSetNodeLengths(column.mesh, *column.mesh.findSideSet("top"));
-    std::vector<Real> rates;
-    for (const Real length : top.lengths) rates.push_back(q * length);
-    SeepageBoundaryConditions conditions;
-    conditions.addSupplies(top.nodes, rates, true);
-    solver.setBoundaryConditions(conditions);
+    solver.setBoundaryConditions(test::topInflow(column.mesh, q));
   }
 };
 
@@ -210,12 +205,9 @@ TEST(ImplicitSeepage, SeepageFaceOpensOnlyWhereWaterFlowsOut) {
     solver.setSettings(spec);
     solver.setGravity(9.81);
     const Real base = artesian ? 1000 * 9.81 * 1.5 : 1000 * 9.81 * 0.5;
-    SeepageBoundaryConditions conditions;
     const std::vector<int> bottom = test::sideNodes(column.mesh, "bottom");
     const std::vector<int> top = test::sideNodes(column.mesh, "top");
-    conditions.addPressures(bottom, std::vector<Real>(bottom.size(), base));
-    conditions.addSupplies(top, std::vector<Real>(top.size(), 0.0), true);
-    solver.setBoundaryConditions(conditions);
+    solver.setBoundaryConditions(test::prescribedBaseOpenTop(column.mesh, base));
     solver.setNodalPressure([&](Real, Real y) { return base - 1000 * 9.81 * y; });
     solver.advanceTo(2e4);
     const std::vector<Real> p = solver.nodalPressure();

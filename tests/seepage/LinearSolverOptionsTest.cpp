@@ -30,12 +30,7 @@ std::vector<Real> infiltrate(const LinearSolverSpec& linear, bool reuse_matrix,
   spec.linear = linear;
   solver.setSettings(spec);
   solver.setGravity(9.81);
-  const SideSetNodes top = sideSetNodeLengths(column.mesh, *column.mesh.findSideSet("top"));
-  std::vector<Real> rates;
-  for (const Real length : top.lengths) rates.push_back(2e-4 * length);
-  SeepageBoundaryConditions conditions;
-  conditions.addSupplies(top.nodes, rates, true);
-  solver.setBoundaryConditions(conditions);
+  solver.setBoundaryConditions(test::topInflow(column.mesh, 2e-4));
   const Real initial = solver.liquidMass();
   solver.advanceTo(200);
   *totals = solver.totals();

@@ -117,12 +117,7 @@ struct DryInfiltration {
         solver(column.mesh, column.points, column.materials) {
     solver.setSettings(spec);
     solver.setGravity(9.81);
-    const SideSetNodes top = sideSetNodeLengths(column.mesh, *column.mesh.findSideSet("top"));
-    std::vector<Real> rates;
-    for (const Real length : top.lengths) rates.push_back(q * length);
-    SeepageBoundaryConditions conditions;
-    conditions.addSupplies(top.nodes, rates, true);
-    solver.setBoundaryConditions(conditions);
+    solver.setBoundaryConditions(test::topInflow(column.mesh, q));
   }
 };
 
@@ -213,12 +208,9 @@ TEST(NewtonSeepage, SeepageFaceOverPrescribedBaseAsPicard) {
     solver.setSettings(spec);
     solver.setGravity(9.81);
     const Real base = 1000 * 9.81 * 1.5;
-    SeepageBoundaryConditions conditions;
     const std::vector<int> bottom = test::sideNodes(column.mesh, "bottom");
     const std::vector<int> top = test::sideNodes(column.mesh, "top");
-    conditions.addPressures(bottom, std::vector<Real>(bottom.size(), base));
-    conditions.addSupplies(top, std::vector<Real>(top.size(), 0.0), true);
-    solver.setBoundaryConditions(conditions);
+    solver.setBoundaryConditions(test::prescribedBaseOpenTop(column.mesh, base));
     solver.setNodalPressure([&](Real, Real y) { return base - 1000 * 9.81 * y; });
     solver.advanceTo(2e4);
     EXPECT_EQ(solver.heldNodes(), top);

@@ -48,4 +48,26 @@ inline std::vector<int> sideNodes(const Mesh& mesh, const std::string& name) {
   return sideSetNodeLengths(mesh, *mesh.findSideSet(name)).nodes;
 }
 
+/// A uniform inflow q (m/s) through the column's top side set: nodal supplies q times each
+/// node's tributary length, with the ponding switch on.
+inline SeepageBoundaryConditions topInflow(const Mesh& mesh, Real q) {
+  const SideSetNodes top = sideSetNodeLengths(mesh, *mesh.findSideSet("top"));
+  std::vector<Real> rates;
+  for (const Real length : top.lengths) rates.push_back(q * length);
+  SeepageBoundaryConditions conditions;
+  conditions.addSupplies(top.nodes, rates, true);
+  return conditions;
+}
+
+/// p_L = base held at the column's bottom and a zero supply with the ponding switch at its
+/// top (a seepage face there once the column is saturated up to it).
+inline SeepageBoundaryConditions prescribedBaseOpenTop(const Mesh& mesh, Real base) {
+  SeepageBoundaryConditions conditions;
+  const std::vector<int> bottom = sideNodes(mesh, "bottom");
+  const std::vector<int> top = sideNodes(mesh, "top");
+  conditions.addPressures(bottom, std::vector<Real>(bottom.size(), base));
+  conditions.addSupplies(top, std::vector<Real>(top.size(), 0.0), true);
+  return conditions;
+}
+
 }  // namespace argine::test

@@ -141,6 +141,16 @@ KOKKOS_INLINE_FUNCTION Real darcyMobilityPressureDerivative(const PointMaterial&
              (material.liquid.density * kStandardGravity);
 }
 
+/// The driving gradient of Darcy's law at the point, d = grad p + rho_L g e_y (4.2-4.3),
+/// with grad p = sum_b p_b grad N_b from the nodal pressures `p[b]` of the point's nodes.
+KOKKOS_INLINE_FUNCTION void pointDrivingGradient(const PointShape& shape, int nodes, const Real* p,
+                                                 Real density_gravity, Real driving[kDim]) {
+  driving[0] = 0;
+  driving[1] = density_gravity;
+  for (int b = 0; b < nodes; ++b)
+    for (int d = 0; d < kDim; ++d) driving[d] += p[b] * shape.gradient[b][d];
+}
+
 /// Adds the non-symmetric part of the point's flux Jacobian, N3 + N4, to out[a][b]:
 ///   out[a][b] += N_b (mobility_slope (grad N_a . d) + density_slope dN_a/dy),
 /// d = grad p + rho_L g e_y from the nodal pressures p[b] (as addPointFluxVector);
@@ -148,9 +158,8 @@ KOKKOS_INLINE_FUNCTION Real darcyMobilityPressureDerivative(const PointMaterial&
 KOKKOS_INLINE_FUNCTION void addPointFluxJacobianCorrection(
     const PointShape& shape, int nodes, const Real* p, Real density_gravity, Real mobility_slope,
     Real density_slope, Real out[kMaxElementNodes][kMaxElementNodes]) {
-  Real driving[kDim] = {0, density_gravity};  // grad p + rho_L g e_y
-  for (int b = 0; b < nodes; ++b)
-    for (int d = 0; d < kDim; ++d) driving[d] += p[b] * shape.gradient[b][d];
+  Real driving[kDim];
+  pointDrivingGradient(shape, nodes, p, density_gravity, driving);
   for (int a = 0; a < nodes; ++a) {
     Real dot = 0;
     for (int d = 0; d < kDim; ++d) dot += shape.gradient[a][d] * driving[d];
@@ -186,9 +195,8 @@ KOKKOS_INLINE_FUNCTION void addPointConductivityMatrix(
 KOKKOS_INLINE_FUNCTION void addPointFluxVector(const PointShape& shape, int nodes, const Real* p,
                                                Real volume_mobility, Real density_gravity,
                                                Real* out) {
-  Real driving[kDim] = {0, density_gravity};  // grad p + rho_L g e_y
-  for (int b = 0; b < nodes; ++b)
-    for (int d = 0; d < kDim; ++d) driving[d] += p[b] * shape.gradient[b][d];
+  Real driving[kDim];
+  pointDrivingGradient(shape, nodes, p, density_gravity, driving);
   for (int a = 0; a < nodes; ++a) {
     Real dot = 0;
     for (int d = 0; d < kDim; ++d) dot += shape.gradient[a][d] * driving[d];
