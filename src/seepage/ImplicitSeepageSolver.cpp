@@ -16,6 +16,12 @@
 namespace argine {
 
 namespace {
+
+/// One row of the theta-scheme residual R = storage/dt + theta F(p) + (1 - theta) F(p_old) - Q
+/// (the step's iteration and linearise() for the tests use this one formula).
+Real thetaResidual(Real storage, Real flux, Real flux_old, Real supply, Real dt, Real theta) {
+  return storage / dt + theta * flux + (1 - theta) * flux_old - supply;
+}
 constexpr int kNone = -1;
 }  // namespace
 
@@ -387,7 +393,7 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
     storageAndFlux(p, s, f);
     for (int i = 0; i < dofs(); ++i) {
       const Real q = isFixed(i) ? 0.0 : supply[i];
-      residual[i] = s[i] / dt + theta * f[i] + (1 - theta) * flux_old[i] - q;
+      residual[i] = thetaResidual(s[i], f[i], flux_old[i], q, dt, theta);
       terms_scale[i] = std::fabs(s[i] / dt) + std::fabs(theta * f[i]) +
                        std::fabs((1 - theta) * flux_old[i]) + std::fabs(q);
     }
@@ -595,7 +601,7 @@ SeepageLinearisation ImplicitSeepageSolver::linearise(Real dt, const std::vector
   s.storageAndFlux(nodal, storage, flux);
   out.residual.resize(s.dofs());
   for (int i = 0; i < s.dofs(); ++i)
-    out.residual[i] = storage[i] / dt + theta * flux[i] + (1 - theta) * flux_old[i] - s.supply[i];
+    out.residual[i] = thetaResidual(storage[i], flux[i], flux_old[i], s.supply[i], dt, theta);
   out.matrix.assign(static_cast<std::size_t>(s.dofs()) * s.dofs(), 0.0);
   for (std::size_t i = 0; i < s.liquid_points.size(); ++i) {
     const Impl::Point& point = s.liquid_points[i];

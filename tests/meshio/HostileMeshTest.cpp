@@ -39,6 +39,17 @@ Mesh twoTriangles(std::array<double, 2> corner) {
   return mesh;
 }
 
+/// Writes argine's generated 0.5 m rectangle mesh to scratch file `name` and returns the
+/// file's bytes (a valid Exodus file to damage).
+std::string goodMeshBytes(const std::string& name) {
+  GeneratorSpec generator;
+  generator.element_size = 0.5;
+  const std::string path = scratchFile(name);
+  writeExodusMesh(path, generateMesh(generator));
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 TEST(HostileMesh, AnInvertedElementAmongCounterClockwiseOnesIsReported) {
   const std::string path = scratchFile("inverted.exo");
   // Node 3 at (1, 1): both triangles counter-clockwise; the file reads and passes.
@@ -62,12 +73,7 @@ TEST(HostileMesh, AnInvertedElementAmongCounterClockwiseOnesIsReported) {
 }
 
 TEST(HostileMesh, EmptyTruncatedAndForeignFilesNameTheFile) {
-  GeneratorSpec generator;
-  generator.element_size = 0.5;
-  const std::string good = scratchFile("good.exo");
-  writeExodusMesh(good, generateMesh(generator));
-  std::ifstream in(good, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = goodMeshBytes("good.exo");
   ASSERT_GT(bytes.size(), 64u);
   const std::vector<std::string> contents{
       "",                                 // empty
@@ -90,12 +96,7 @@ TEST(HostileMesh, EmptyTruncatedAndForeignFilesNameTheFile) {
 }
 
 TEST(HostileMesh, AHeaderClaimingMoreThanTheFileHoldsNamesTheFile) {
-  GeneratorSpec generator;
-  generator.element_size = 0.5;
-  const std::string good = scratchFile("header.exo");
-  writeExodusMesh(good, generateMesh(generator));
-  std::ifstream in(good, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string bytes = goodMeshBytes("header.exo");
   // netCDF header: the dimension name "num_nodes" (9 bytes, padded to 12), then its length
   // as a 4-byte big-endian integer. Claim 2^31 - 1 nodes (32 GiB of coordinates).
   const auto at = bytes.find("num_nodes");
