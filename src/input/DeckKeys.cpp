@@ -562,6 +562,20 @@ ListSchema stageKeys() {
                 .byDefault(0.0));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
+  stage.add(KeySpec::real("Solid PIC Fraction", "-",
+                          "share of the PIC update in the solid point velocities, per step; "
+                          "0: FLIP (the thesis); removes point-scale velocity noise in "
+                          "about dt / fraction")
+                .atLeast(0)
+                .atMost(1)
+                .byDefault(0.0));
+  stage.add(KeySpec::real("Liquid PIC Fraction", "-",
+                          "share per step of the grid's relative velocity v_L - v_S in the "
+                          "liquid point velocities (PIC for the Darcy part); 0: FLIP (the "
+                          "thesis); 1 removes point-scale liquid velocity noise")
+                .atLeast(0)
+                .atMost(1)
+                .byDefault(0.0));
   stage.add(KeySpec::real("Output Interval (s)", "s", "time between outputs; 0: end of stage only")
                 .atLeast(0)
                 .byDefault(0.0));

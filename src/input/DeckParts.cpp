@@ -373,6 +373,8 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.gravity = stage.real("Gravity (m/s2)");
   spec.local_damping = stage.real("Local Damping");
   spec.mass_scaling = stage.real("Mass Scaling");
+  spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
+  spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.output_interval = stage.real("Output Interval (s)");
   spec.reset_displacements = stage.boolean("Reset Displacements");
   spec.time_step = parseTimeStep(stage.section("Time Step"));

@@ -80,6 +80,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
                      "skeleton stages; implicit seepage needs the implicit solver");
   momentum_.local_damping = stage.local_damping;
   momentum_.mass_scaling = stage.mass_scaling;
+  velocity_blend_ = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
@@ -278,7 +279,7 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),
   // and sums the kinetic energies, in the same pass over the points.
   kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
-                                                points_, grid_);
+                                                velocity_blend_, points_, grid_);
   if (exchange_) sumMomentaAtSharedNodes(*exchange_, grid_);  // (kinetic_: end of step)
 }
 

@@ -126,7 +126,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
 template <int kNodes>
 KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const LiquidCarrying& liquid_m, Real dt,
-                                                MaterialPoints& points, GridFields& grid) {
+                                                VelocityBlend blend, MaterialPoints& points,
+                                                GridFields& grid) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
@@ -137,6 +138,9 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const auto velocity_liquid_p = points.velocity_liquid;
   const auto acceleration_solid_i = grid.acceleration_solid_i;
   const auto acceleration_liquid_i = grid.acceleration_liquid_i;
+  const auto velocity_solid_i = grid.velocity_solid_i;
+  const auto velocity_liquid_i = grid.velocity_liquid_i;
+  const Real pic_solid = blend.solid, pic_liquid = blend.liquid;
   auto momentum_solid_sv = KE::create_scatter_view(grid.momentum_solid_i);
   auto momentum_liquid_sv = KE::create_scatter_view(grid.momentum_liquid_i);
   Real kinetic_solid = 0, kinetic_liquid = 0;
@@ -147,19 +151,24 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         const PointShape& shape = shape_p(p);
         if (shape.node[0] < 0) return;
         const bool wet = liquid_m(material_p(p)) != 0;
-        Real as[kDim] = {0, 0}, al[kDim] = {0, 0};
+        // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header)
+        Real as[kDim] = {0, 0}, al[kDim] = {0, 0}, vs_grid[kDim] = {0, 0}, vl[kDim] = {0, 0};
         for (int a = 0; a < kNodes; ++a) {
           const int i = shape.node[a];
           const Real N = shape.value[a];
-          as[0] += N * acceleration_solid_i(i, 0);
-          as[1] += N * acceleration_solid_i(i, 1);
-          if (wet) {
-            al[0] += N * acceleration_liquid_i(i, 0);
-            al[1] += N * acceleration_liquid_i(i, 1);
+          for (int d = 0; d < kDim; ++d) {
+            as[d] += N * acceleration_solid_i(i, d);
+            if (pic_solid > 0 || (wet && pic_liquid > 0)) vs_grid[d] += N * velocity_solid_i(i, d);
+            if (wet) {
+              al[d] += N * acceleration_liquid_i(i, d);
+              if (pic_liquid > 0) vl[d] += N * velocity_liquid_i(i, d);
+            }
           }
         }
-        const Real vsx = velocity_solid_p(p, 0) + dt * as[0];
-        const Real vsy = velocity_solid_p(p, 1) + dt * as[1];
+        const Real vsx =
+            velocity_solid_p(p, 0) + dt * as[0] + pic_solid * (vs_grid[0] - velocity_solid_p(p, 0));
+        const Real vsy =
+            velocity_solid_p(p, 1) + dt * as[1] + pic_solid * (vs_grid[1] - velocity_solid_p(p, 1));
         velocity_solid_p(p, 0) = vsx;
         velocity_solid_p(p, 1) = vsy;
         const Real ms = mass_solid_p(p);
@@ -173,8 +182,16 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
           momentum_solid_i(i, 1) += N * ms * vsy;
         }
         if (!wet) return;
-        const Real vlx = velocity_liquid_p(p, 0) + dt * al[0];
-        const Real vly = velocity_liquid_p(p, 1) + dt * al[1];
+        // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
+        // (the header); with pic_liquid = 0 this is FLIP.
+        Real v_liquid[kDim];
+        for (int d = 0; d < kDim; ++d) {
+          const Real flip = velocity_liquid_p(p, d) + dt * al[d];
+          const Real solid_new = d == 0 ? vsx : vsy;
+          const Real relative_pic = solid_new + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
+          v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
+        }
+        const Real vlx = v_liquid[0], vly = v_liquid[1];
         velocity_liquid_p(p, 0) = vlx;
         velocity_liquid_p(p, 1) = vly;
         kl += 0.5 * mass_liquid_p(p) * (vlx * vlx + vly * vly);
@@ -301,7 +318,8 @@ void computeNodalVelocities(const ActiveNodes& active, GridFields& grid) {
 KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  const LiquidCarrying& liquid_m,
                                                  const ActiveNodes& active, Real dt,
-                                                 MaterialPoints& points, GridFields& grid) {
+                                                 VelocityBlend blend, MaterialPoints& points,
+                                                 GridFields& grid) {
   const auto nodes = active.nodes();
   const auto momentum_solid_i = grid.momentum_solid_i;
   const auto momentum_liquid_i = grid.momentum_liquid_i;
@@ -313,8 +331,8 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
       });
   KineticTotals totals;
   withNodeCount(shapes, [&](auto count) {
-    totals = updateVelocitiesAndMapMomentaImpl<decltype(count)::value>(shapes, liquid_m, dt, points,
-                                                                       grid);
+    totals = updateVelocitiesAndMapMomentaImpl<decltype(count)::value>(shapes, liquid_m, dt, blend,
+                                                                       points, grid);
   });
   return totals;
 }

@@ -195,6 +195,170 @@ TEST_P(TransferOnShape, UniformStressAndPressureGiveNoForceAtInteriorNodes) {
   }
 }
 
+/// Random nodal velocities and accelerations of both phases.
+void randomiseGrid(GridFields& grid, int nodes, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  for (auto field : {grid.velocity_solid_i, grid.velocity_liquid_i, grid.acceleration_solid_i,
+                     grid.acceleration_liquid_i}) {
+    auto host = Kokkos::create_mirror_view(field);
+    for (int i = 0; i < nodes; ++i)
+      for (int d = 0; d < kDim; ++d) host(i, d) = u(rng);
+    Kokkos::deep_copy(field, host);
+  }
+}
+
+TEST_P(TransferOnShape, VelocityBlendIsFlipAtZeroAndTakesTheGridVelocitiesAtOne) {
+  const Mesh mesh = test::rectangleMesh(3, 2, 1.5, 1.0, GetParam());
+  MaterialPoints points = test::seedUniform(mesh);
+  randomise(points, 11);
+  PointShapes shapes;
+  evaluatePointShapes(mesh, points, shapes);
+  GridFields grid;
+  grid.allocate(mesh.numNodes());
+  randomiseGrid(grid, mesh.numNodes(), 12);
+  ActiveNodes active(mesh.numNodes());
+  active.rebuild(mesh, points);
+  const Real dt = 0.01;
+  const auto vs0 = hostCopy(points.velocity_solid), vl0 = hostCopy(points.velocity_liquid);
+  const auto shape = hostCopy(shapes.shape_p);
+  const auto mat = hostCopy(points.material);
+  const auto gvs = hostCopy(grid.velocity_solid_i), gvl = hostCopy(grid.velocity_liquid_i);
+  const auto gas = hostCopy(grid.acceleration_solid_i);
+  const auto gal = hostCopy(grid.acceleration_liquid_i);
+  const int per = GetParam() == ElementType::Quad4 ? 4 : 3;
+  auto interpolate = [&](const auto& field, int p, int d) {
+    Real sum = 0;
+    for (int a = 0; a < per; ++a) sum += shape(p).value[a] * field(shape(p).node[a], d);
+    return sum;
+  };
+  struct Case {
+    VelocityBlend blend;
+    const char* name;
+  };
+  for (const Case& c : {Case{{0, 0}, "FLIP"}, Case{{1, 1}, "PIC"}, Case{{0, 1}, "relative"},
+                        Case{{0.3, 0.6}, "blend"}}) {
+    Kokkos::deep_copy(points.velocity_solid, vs0);
+    Kokkos::deep_copy(points.velocity_liquid, vl0);
+    updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, dt, c.blend, points, grid);
+    const auto vs = hostCopy(points.velocity_solid), vl = hostCopy(points.velocity_liquid);
+    for (int p = 0; p < points.count; ++p)
+      for (int d = 0; d < kDim; ++d) {
+        // hand formulas of the VelocityBlend comment
+        const Real as = interpolate(gas, p, d), al = interpolate(gal, p, d);
+        const Real solid_flip = vs0(p, d) + dt * as;
+        const Real solid_pic = interpolate(gvs, p, d) + dt * as;
+        const Real solid = (1 - c.blend.solid) * solid_flip + c.blend.solid * solid_pic;
+        EXPECT_NEAR(vs(p, d), solid, 1e-14) << c.name << " point " << p;
+        if (mat(p) != 0) continue;
+        const Real liquid_flip = vl0(p, d) + dt * al;
+        const Real liquid_relative =
+            solid + interpolate(gvl, p, d) - interpolate(gvs, p, d) + dt * (al - as);
+        EXPECT_NEAR(vl(p, d), (1 - c.blend.liquid) * liquid_flip + c.blend.liquid * liquid_relative,
+                    1e-14)
+            << c.name << " point " << p;
+        if (c.blend.solid == 1 && c.blend.liquid == 1) {  // both PIC: sum N (v_L,i + dt a_L,i)
+          EXPECT_NEAR(vl(p, d), interpolate(gvl, p, d) + dt * al, 1e-14);
+        }
+      }
+  }
+}
+
+/// Solves the dense system A x = b in place (Gaussian elimination, partial pivoting).
+std::vector<Real> solveDense(std::vector<std::vector<Real>> A, std::vector<Real> b) {
+  const int n = static_cast<int>(b.size());
+  for (int k = 0; k < n; ++k) {
+    int pivot = k;
+    for (int r = k + 1; r < n; ++r)
+      if (std::abs(A[r][k]) > std::abs(A[pivot][k])) pivot = r;
+    std::swap(A[k], A[pivot]);
+    std::swap(b[k], b[pivot]);
+    for (int r = k + 1; r < n; ++r) {
+      const Real f = A[r][k] / A[k][k];
+      for (int c = k; c < n; ++c) A[r][c] -= f * A[k][c];
+      b[r] -= f * b[k];
+    }
+  }
+  std::vector<Real> x(n);
+  for (int k = n - 1; k >= 0; --k) {
+    Real sum = b[k];
+    for (int c = k + 1; c < n; ++c) sum -= A[k][c] * x[c];
+    x[k] = sum / A[k][k];
+  }
+  return x;
+}
+
+TEST_P(TransferOnShape, PicShareRemovesTheVelocityNoiseTheGridCannotSeeAndKeepsMomentum) {
+  // Noise the grid cannot see: point velocities whose P2G momenta are zero at every node
+  // (there are more points than nodes). Built from random velocities by removing their
+  // grid-representable part (the mass-weighted projection onto fields sum N v_i), plus a
+  // uniform velocity u. Without forces FLIP keeps the noise for ever; the PIC share alpha
+  // removes exactly a fraction alpha of it per step (its PIC velocity is 0), and keeps u and
+  // the momentum (sum_p m_p sum_i N_ip v_i = sum_i m_i v_i = sum_p m_p v_p).
+  const Mesh mesh = test::rectangleMesh(4, 3, 2.0, 1.5, GetParam());
+  MaterialPoints points = test::seedUniform(mesh);
+  randomise(points, 21);
+  Kokkos::deep_copy(points.material, 1);  // dry: the solid phase alone
+  PointShapes shapes;
+  evaluatePointShapes(mesh, points, shapes);
+  ActiveNodes active(mesh.numNodes());
+  active.rebuild(mesh, points);
+  GridFields grid;
+  grid.allocate(mesh.numNodes());
+  const int per = GetParam() == ElementType::Quad4 ? 4 : 3, nodes = mesh.numNodes();
+  const auto shape = hostCopy(shapes.shape_p);
+  const auto ms = hostCopy(points.mass_solid);
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.velocity_solid);
+  std::vector<std::vector<Real>> mass(nodes, std::vector<Real>(nodes, 0.0));  // consistent
+  for (int p = 0; p < points.count; ++p)
+    for (int a = 0; a < per; ++a)
+      for (int b = 0; b < per; ++b)
+        mass[shape(p).node[a]][shape(p).node[b]] += ms(p) * shape(p).value[a] * shape(p).value[b];
+  const Real u[kDim] = {0.3, -0.2};
+  for (int d = 0; d < kDim; ++d) {
+    std::vector<Real> momentum(nodes, 0.0);
+    for (int p = 0; p < points.count; ++p)
+      for (int a = 0; a < per; ++a)
+        momentum[shape(p).node[a]] += shape(p).value[a] * ms(p) * v(p, d);
+    const std::vector<Real> field = solveDense(mass, momentum);
+    for (int p = 0; p < points.count; ++p) {
+      for (int a = 0; a < per; ++a) v(p, d) -= shape(p).value[a] * field[shape(p).node[a]];
+      v(p, d) += u[d];
+    }
+  }
+  Kokkos::deep_copy(points.velocity_solid, v);
+  auto noise = [&] {  // mass-weighted norm of v - u, and the momentum
+    const auto now = hostCopy(points.velocity_solid);
+    Real sum = 0;
+    for (int p = 0; p < points.count; ++p)
+      for (int d = 0; d < kDim; ++d) sum += ms(p) * (now(p, d) - u[d]) * (now(p, d) - u[d]);
+    return std::sqrt(sum);
+  };
+  auto momentum = [&](int d) {
+    const auto now = hostCopy(points.velocity_solid);
+    Real sum = 0;
+    for (int p = 0; p < points.count; ++p) sum += ms(p) * now(p, d);
+    return sum;
+  };
+  auto run = [&](VelocityBlend blend, int steps) {
+    for (int n = 0; n < steps; ++n) {
+      grid.zero(active);
+      mapPointsToGrid(points, shapes, liquidFlags(), 0.0, grid);
+      computeNodalVelocities(active, grid);
+      Kokkos::deep_copy(grid.acceleration_solid_i, 0.0);
+      updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, 1e-3, blend, points, grid);
+    }
+  };
+  const Real noise0 = noise(), momentum0[kDim] = {momentum(0), momentum(1)};
+  ASSERT_GT(noise0, 0.1);
+  run({0, 0}, 100);
+  EXPECT_NEAR(noise(), noise0, 1e-12 * noise0);  // FLIP without forces: nothing changes
+  const Real alpha = 0.05;
+  run({alpha, 0}, 100);
+  EXPECT_NEAR(noise(), std::pow(1 - alpha, 100) * noise0, 1e-10 * noise0);
+  for (int d = 0; d < kDim; ++d) EXPECT_NEAR(momentum(d), momentum0[d], 1e-12);
+}
+
 INSTANTIATE_TEST_SUITE_P(Shapes, TransferOnShape,
                          ::testing::Values(ElementType::Quad4, ElementType::Tri3));
 

@@ -270,6 +270,7 @@ class ExplicitTwoPhaseSolver {
   int outflow_limited_ = 0;           ///< points it capped in this step
   TimeStepControl time_step_;
   MomentumSettings momentum_;
+  VelocityBlend velocity_blend_;  ///< PIC shares of the point velocity update (stage keys)
   Real gravity_ = 0;
   std::string stage_name_;
   bool stage_started_ = false;
