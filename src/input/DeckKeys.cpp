@@ -572,7 +572,7 @@ ListSchema stageKeys() {
   stage.add(KeySpec::real("Liquid PIC Fraction", "-",
                           "share per step of the grid's relative velocity v_L - v_S in the "
                           "liquid point velocities (PIC for the Darcy part); 0: FLIP (the "
-                          "thesis); 1 removes point-scale liquid velocity noise")
+                          "thesis); keep 0 with mass scaling (doc/theory.md Sec. 3.6)")
                 .atLeast(0)
                 .atMost(1)
                 .byDefault(0.0));
