@@ -62,16 +62,29 @@ Kokkos::View<const int*, MemSpace> liquidFlags() {
   return flags;
 }
 
+/// A rectangle of nx x ny cells with uniformly seeded, randomised points (randomise), their
+/// shapes and an allocated grid.
+struct RandomScene {
+  Mesh mesh;
+  MaterialPoints points;
+  PointShapes shapes;
+  GridFields grid;
+};
+
+RandomScene randomScene(int nx, int ny, Real width, Real height, ElementType type, unsigned seed) {
+  RandomScene scene;
+  scene.mesh = test::rectangleMesh(nx, ny, width, height, type);
+  scene.points = test::seedUniform(scene.mesh);
+  randomise(scene.points, seed);
+  evaluatePointShapes(scene.mesh, scene.points, scene.shapes);
+  scene.grid.allocate(scene.mesh.numNodes());
+  return scene;
+}
+
 class TransferOnShape : public ::testing::TestWithParam<ElementType> {};
 
 TEST_P(TransferOnShape, P2GConservesMassAndMomentumExactly) {
-  const Mesh mesh = test::rectangleMesh(3, 4, 1.5, 2.0, GetParam());
-  MaterialPoints points = test::seedUniform(mesh);
-  randomise(points, 7);
-  PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
-  GridFields grid;
-  grid.allocate(mesh.numNodes());
+  auto [mesh, points, shapes, grid] = randomScene(3, 4, 1.5, 2.0, GetParam(), 7);
   mapPointsToGrid(points, shapes, liquidFlags(), 9.81, grid);
 
   // Sums over points (host)...
@@ -209,13 +222,7 @@ void randomiseGrid(GridFields& grid, int nodes, unsigned seed) {
 }
 
 TEST_P(TransferOnShape, VelocityBlendIsFlipAtZeroAndTakesTheGridVelocitiesAtOne) {
-  const Mesh mesh = test::rectangleMesh(3, 2, 1.5, 1.0, GetParam());
-  MaterialPoints points = test::seedUniform(mesh);
-  randomise(points, 11);
-  PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
-  GridFields grid;
-  grid.allocate(mesh.numNodes());
+  auto [mesh, points, shapes, grid] = randomScene(3, 2, 1.5, 1.0, GetParam(), 11);
   randomiseGrid(grid, mesh.numNodes(), 12);
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
@@ -295,16 +302,10 @@ TEST_P(TransferOnShape, PicShareRemovesTheVelocityNoiseTheGridCannotSeeAndKeepsM
   // uniform velocity u. Without forces FLIP keeps the noise for ever; the PIC share alpha
   // removes exactly a fraction alpha of it per step (its PIC velocity is 0), and keeps u and
   // the momentum (sum_p m_p sum_i N_ip v_i = sum_i m_i v_i = sum_p m_p v_p).
-  const Mesh mesh = test::rectangleMesh(4, 3, 2.0, 1.5, GetParam());
-  MaterialPoints points = test::seedUniform(mesh);
-  randomise(points, 21);
+  auto [mesh, points, shapes, grid] = randomScene(4, 3, 2.0, 1.5, GetParam(), 21);
   Kokkos::deep_copy(points.material, 1);  // dry: the solid phase alone
-  PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
-  GridFields grid;
-  grid.allocate(mesh.numNodes());
   const int per = GetParam() == ElementType::Quad4 ? 4 : 3, nodes = mesh.numNodes();
   const auto shape = hostCopy(shapes.shape_p);
   const auto ms = hostCopy(points.mass_solid);
