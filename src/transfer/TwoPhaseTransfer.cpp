@@ -165,12 +165,13 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
             }
           }
         }
-        const Real vsx =
-            velocity_solid_p(p, 0) + dt * as[0] + pic_solid * (vs_grid[0] - velocity_solid_p(p, 0));
-        const Real vsy =
-            velocity_solid_p(p, 1) + dt * as[1] + pic_solid * (vs_grid[1] - velocity_solid_p(p, 1));
-        velocity_solid_p(p, 0) = vsx;
-        velocity_solid_p(p, 1) = vsy;
+        Real v_solid[kDim];
+        for (int d = 0; d < kDim; ++d) {
+          const Real v = velocity_solid_p(p, d);
+          v_solid[d] = v + dt * as[d] + pic_solid * (vs_grid[d] - v);
+          velocity_solid_p(p, d) = v_solid[d];
+        }
+        const Real vsx = v_solid[0], vsy = v_solid[1];
         const Real ms = mass_solid_p(p);
         ks += 0.5 * ms * (vsx * vsx + vsy * vsy);
         if (!(Kokkos::Experimental::isfinite(vsx) && Kokkos::Experimental::isfinite(vsy))) ++bad;
@@ -187,8 +188,7 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         Real v_liquid[kDim];
         for (int d = 0; d < kDim; ++d) {
           const Real flip = velocity_liquid_p(p, d) + dt * al[d];
-          const Real solid_new = d == 0 ? vsx : vsy;
-          const Real relative_pic = solid_new + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
+          const Real relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
           v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
         }
         const Real vlx = v_liquid[0], vly = v_liquid[1];

@@ -60,7 +60,6 @@ struct KineticTotals {
 struct VelocityBlend {
   Real solid = 0;   ///< alpha_S: PIC share of the solid velocity update
   Real liquid = 0;  ///< alpha_L: grid share of the liquid's relative velocity update
-  bool any() const { return solid > 0 || liquid > 0; }
 };
 
 /// Sec. 3.3 steps 3-4 in one pass over the points: the G2P of the nodal accelerations,
