@@ -305,9 +305,10 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     const SeepageTotals& totals = seepage.totals();
     const Real stored = seepage.liquidMass() - initial_mass;
     std::printf(
-        "argine: stage '%s' (implicit seepage): %lld steps (%lld rejected), %lld Picard and "
+        "argine: stage '%s' (implicit seepage): %lld steps (%lld rejected), %lld %s and "
         "%lld linear iterations; liquid mass change %.6g kg/m, boundary inflow %.6g kg/m\n",
         stage.name.c_str(), totals.steps, totals.rejected_steps, totals.picard_iterations,
+        stage.seepage.iteration == SeepageIteration::Newton ? "Newton" : "Picard",
         totals.linear_iterations, stored, totals.inflow);
     std::fflush(stdout);
   }

@@ -3,6 +3,9 @@
 // the same answer as Picard in fewer iterations on a strongly non-linear infiltration,
 // quadratic convergence, and the mass balance.
 #include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <Teuchos_DefaultMpiComm.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -112,9 +115,10 @@ TEST(NewtonSeepage, CgIsRefusedForNewton) {
 struct DryInfiltration {
   SeepageColumn column;
   ImplicitSeepageSolver solver;
-  DryInfiltration(const ImplicitSeepageSpec& spec, Real q)
+  DryInfiltration(const ImplicitSeepageSpec& spec, Real q,
+                  Teuchos::RCP<const Teuchos::Comm<int>> comm = Teuchos::null)
       : column(20, 0.05, 1.0, mualemSoil(), -8000),
-        solver(column.mesh, column.points, column.materials) {
+        solver(column.mesh, column.points, column.materials, comm) {
     solver.setSettings(spec);
     solver.setGravity(9.81);
     solver.setBoundaryConditions(test::topInflow(column.mesh, q));
@@ -242,6 +246,38 @@ TEST(NewtonSeepage, PondingAndReuseMatrixConserveMass) {
     EXPECT_NEAR(totals.inflow, stored, 1e-10 * stored);
     EXPECT_LT(totals.inflow, 1e-3 * 0.05 * 1000 * 200);
   }
+}
+
+TEST(NewtonSeepage, OneAndAllRanksGiveTheSameAnswer) {
+  // Newton's non-symmetric Jacobian over the ranks' owned and ghost nodes (test
+  // seepage_two_ranks runs this under `mpiexec -n 2`): the strongly non-linear dry Mualem
+  // infiltration with adaptive steps, so a rank-dependent Jacobian entry would change the
+  // iteration counts, the accepted steps and the pressures.
+  auto self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  auto world = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_WORLD));
+  ImplicitSeepageSpec spec = settings(SeepageIteration::Newton, 5);
+  spec.adaptive = true;
+  spec.max_step = 50;
+  DryInfiltration one(spec, 5e-5, self), all(spec, 5e-5, world);
+  one.solver.advanceTo(400);
+  all.solver.advanceTo(400);
+  const std::vector<Real> a = one.solver.nodalPressure(), b = all.solver.nodalPressure();
+  Real range = 0, difference = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    range = std::max(range, std::fabs(a[i]));
+    difference = std::max(difference, std::fabs(a[i] - b[i]));
+  }
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  const SeepageTotals &ta = one.solver.totals(), &tb = all.solver.totals();
+  std::printf(
+      "ranks %d: max |p_1 - p_all| = %.3e Pa (range %.3e Pa), steps %lld vs %lld, Newton "
+      "iterations %lld vs %lld\n",
+      ranks, difference, range, ta.steps, tb.steps, ta.picard_iterations, tb.picard_iterations);
+  EXPECT_EQ(ta.steps, tb.steps);
+  EXPECT_EQ(ta.picard_iterations, tb.picard_iterations);
+  EXPECT_LE(difference, 1e-9 * range);
+  EXPECT_NEAR(one.solver.liquidMass(), all.solver.liquidMass(), 1e-12 * one.solver.liquidMass());
 }
 
 }  // namespace
