@@ -576,6 +576,14 @@ ListSchema stageKeys() {
                 .atLeast(0)
                 .atMost(1)
                 .byDefault(0.0));
+  stage.add(KeySpec::choice("Liquid Pressure", Words{"free", "held"},
+                            "free: the liquid flows and p_L follows the mass balance; held: "
+                            "p_L and S_L stay as the stage finds them and the liquid moves "
+                            "with the solid, so the skeleton settles into equilibrium with "
+                            "the pore pressure a previous (implicit seepage) stage left "
+                            "(drained hand-over; the liquid mass follows the pore volume)")
+                .byDefault(std::string("free"))
+                .when("Solver", {"quasi-static"}));
   stage.add(KeySpec::real("Output Interval (s)", "s", "time between outputs; 0: end of stage only")
                 .atLeast(0)
                 .byDefault(0.0));

@@ -375,6 +375,8 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.mass_scaling = stage.real("Mass Scaling");
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
+  spec.hold_liquid_pressure =
+      spec.solver == SolverKind::QuasiStatic && stage.word("Liquid Pressure") == "held";
   spec.output_interval = stage.real("Output Interval (s)");
   spec.reset_displacements = stage.boolean("Reset Displacements");
   spec.time_step = parseTimeStep(stage.section("Time Step"));

@@ -82,6 +82,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.mass_scaling = stage.mass_scaling;
   velocity_blend_ = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
+  momentum_.liquid_with_solid = stage.hold_liquid_pressure;
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
   boundaries_ = StageBoundaryConditions(mesh_, stage);
@@ -105,6 +106,12 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
         "hold_skeleton", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
         KOKKOS_LAMBDA(const int p) {
           for (int d = 0; d < kDim; ++d) pts.velocity_solid(p, d) = 0;
+        });
+  if (momentum_.liquid_with_solid)  // held p_L: no relative flow from the first step on
+    Kokkos::parallel_for(
+        "liquid_with_solid", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
+        KOKKOS_LAMBDA(const int p) {
+          for (int d = 0; d < kDim; ++d) pts.velocity_liquid(p, d) = pts.velocity_solid(p, d);
         });
   if (ranks_) {  // the point sums over the ranks; the boundary loads once
     std::vector<Real> scale{energyScale(points_, table_, gravity_, 0, mesh_size_)};
@@ -241,7 +248,9 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
 }
 
 void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
-  if (hydraulic_.empty()) return;
+  // With the liquid pressure held there is no relative flux to correct: the conditions act
+  // through their loads only (the river's thrust on the slope).
+  if (hydraulic_.empty() || momentum_.liquid_with_solid) return;
   argine::correctHydraulicAccelerations(hydraulic_.corrections(), boundary_fields_, dt,
                                         !momentum_.fixed_skeleton, reference_liquid_density_,
                                         grid_);
@@ -285,7 +294,9 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
   computeNodalVelocities(nodes_in_use_, grid_);
-  if (!hydraulic_.empty()) {  // the relative flux of the mass balance is the prescribed one
+  if (!hydraulic_.empty() &&
+      !momentum_
+           .liquid_with_solid) {  // the relative flux of the mass balance is the prescribed one
     // constrained first, as the accelerations were: the correction measures the flux of the
     // constrained velocities (a lock across the face normal would change it afterwards)
     boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
@@ -306,7 +317,7 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
 
 void ExplicitTwoPhaseSolver::updatePointStates() {
   averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
-  totals_ = argine::updatePointStates(table_, rates_, points_);
+  totals_ = argine::updatePointStates(table_, rates_, points_, momentum_.liquid_with_solid);
   // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
   averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }

@@ -8,6 +8,7 @@ namespace argine {
 
 void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings,
                          GridFields& grid) {
+  if (settings.liquid_with_solid) return;  // solveMixtureMomentum sets a_L = a_S
   const auto nodes = active.nodes();
   const GridFields g = grid;
   const Real alpha = settings.local_damping;
@@ -38,6 +39,7 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
   const Real alpha = settings.local_damping;
   const Real scaling = settings.mass_scaling;
   const bool fixed_skeleton = settings.fixed_skeleton;
+  const bool liquid_with_solid = settings.liquid_with_solid;
   Kokkos::parallel_for(
       "solve_mixture_momentum", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -45,6 +47,16 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
         const Real mass = g.mass_solid_i(i);
         if (fixed_skeleton || !(mass > 0)) {
           g.acceleration_solid_i(i, 0) = g.acceleration_solid_i(i, 1) = 0;
+          return;
+        }
+        if (liquid_with_solid) {  // one mixture equation: (M_S + M_L) a = f^ext - f^int
+          const Real inverse_mixture_mass = 1 / (scaling * (mass + g.mass_liquid_i(i)));
+          for (int d = 0; d < kDim; ++d) {
+            const Real force = g.force_mixture_i(i, d);
+            const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+            g.acceleration_solid_i(i, d) = g.acceleration_liquid_i(i, d) =
+                damped * inverse_mixture_mass;
+          }
           return;
         }
         const Real inverse_mass = 1 / (scaling * mass);
@@ -65,6 +77,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
   const Real alpha = settings.local_damping;
   const Real scaling = settings.mass_scaling;
   const bool fixed_skeleton = settings.fixed_skeleton;
+  const bool liquid_with_solid = settings.liquid_with_solid;
   Kokkos::parallel_for(
       "constrain_accelerations", Kokkos::RangePolicy<ExecSpace>(0, constraints.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -73,7 +86,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
         const bool has_liquid = g.mass_liquid_intrinsic_i(i) > 0;
         const Real mixture_mass = scaling * (g.mass_solid_i(i) + g.mass_liquid_i(i));
         for (int d = 0; d < kDim; ++d) {
-          const bool locked = has_liquid && (bits & liquidLockedBit(d));
+          const bool locked = has_liquid && (liquid_with_solid || (bits & liquidLockedBit(d)));
           const bool fixed = fixed_skeleton || (bits & solidFixedBit(d));
           if (locked && !fixed && mixture_mass > 0) {
             const Real force = g.force_mixture_i(i, d);

@@ -34,9 +34,9 @@ struct PointStateUpdate {
 }  // namespace
 
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
-                              MaterialPoints& points) {
+                              MaterialPoints& points, bool hold_liquid_pressure) {
   PointStateUpdate kernel;
-  kernel.v = PointUpdateViews{table.materials(), points, rates};
+  kernel.v = PointUpdateViews{table.materials(), points, rates, hold_liquid_pressure};
   Real sums[2] = {0, 0};
   Kokkos::parallel_reduce("update_point_states", Kokkos::RangePolicy<ExecSpace>(0, points.count),
                           kernel, sums);

@@ -97,6 +97,21 @@ TEST(DeckStageAdditions, ReadsRelaxationAndMaterialChanges) {
   EXPECT_FALSE(change.intrinsic_permeability.has_value());
 }
 
+TEST(DeckStageAdditions, LiquidPressureHeldOnlyInQuasiStaticStages) {
+  // The drained hand-over stage (Liquid Pressure: held); free by default.
+  EXPECT_FALSE(parseText(kBaseDeck).stages[0].hold_liquid_pressure);
+  const std::string quasi_static = replaced(kBaseDeck, "Solver: explicit", "Solver: quasi-static");
+  EXPECT_FALSE(parseText(quasi_static).stages[0].hold_liquid_pressure);
+  const std::string held = replaced(quasi_static, "      Boundary Conditions:\n",
+                                    "      Liquid Pressure: held\n      Boundary Conditions:\n");
+  EXPECT_TRUE(parseText(held).stages[0].hold_liquid_pressure);
+  expectInputError([&] { parseText(replaced(held, "Solver: quasi-static", "Solver: explicit")); },
+                   "Stages/load/Liquid Pressure", "applies only when Solver is quasi-static");
+  expectInputError(
+      [&] { parseText(replaced(held, "Liquid Pressure: held", "Liquid Pressure: on")); },
+      "Stages/load/Liquid Pressure", "allowed: free, held");
+}
+
 TEST(DeckStageAdditions, FrictionAngleChangeIsConvertedToRadians) {
   const std::string mohr =
       replaced(kBaseDeck, "Model: linear elastic",

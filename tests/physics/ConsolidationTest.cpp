@@ -81,6 +81,46 @@ TEST(Consolidation, TerzaghiColumnUnderTopLoad) {
   EXPECT_LT(fine[0], 0.65 * coarse[3]);
 }
 
+TEST(Consolidation, HeldLiquidPressureGivesTheDrainedResponse) {
+  // `Liquid Pressure: held` (the hand-over after implicit seepage): Terzaghi's column, the
+  // same 10 kPa on top, but the liquid moves with the solid and p_L stays 0, so the skeleton
+  // takes the whole load at once: sigma'_yy = -q everywhere and the top settles by
+  // q H / E_oed = 1e4 * 1 / 1e7 = 1 mm (nu = 0). The liquid mass follows the pore volume,
+  // M_L = n rho_L V, and no point gets a relative velocity. (Free, the base would carry
+  // p0 = 8333 Pa at first: TerzaghiColumnUnderTopLoad.)
+  test::Column column(10, 0.1, 1.0, consolidationClay());
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::traction("load", "top", 0.0, -1e4));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  StageSpec stage =
+      makeStage("drained", SolverKind::QuasiStatic, 0.0, 0.7, boundaries, {CriterionKind::CflDry});
+  stage.hold_liquid_pressure = true;
+  solver.beginStage(stage);
+  runUntil(solver, 1.0);  // damped waves settle in about 0.6 s
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  const auto stress = hostCopy(column.points.stress_effective);
+  const auto mass = hostCopy(column.points.mass_liquid);
+  const auto porosity = hostCopy(column.points.porosity);
+  const auto density = hostCopy(column.points.density_liquid);
+  const auto volume = hostCopy(column.points.volume);
+  const auto u = hostCopy(column.points.displacement);
+  const auto y0 = hostCopy(column.points.initial_position);
+  const auto vs = hostCopy(column.points.velocity_solid);
+  const auto vl = hostCopy(column.points.velocity_liquid);
+  Real top_settlement = 0;
+  for (int p = 0; p < column.points.count; ++p) {
+    EXPECT_EQ(pressure(p), 0.0);
+    EXPECT_NEAR(stress(p, YY), -1e4, 2e-3 * 1e4);
+    EXPECT_NEAR(mass(p), porosity(p) * density(p) * volume(p), 1e-12 * mass(p));
+    for (int d = 0; d < kDim; ++d) EXPECT_EQ(vl(p, d), vs(p, d));
+    // u_y(y) = -q (y / E_oed): the compression of the column below the point.
+    EXPECT_NEAR(u(p, 1), -1e4 * y0(p, 1) / 1e7, 2e-3 * 1e-3);
+    top_settlement = std::min(top_settlement, u(p, 1));
+  }
+  std::printf("[ held ] top points settled %.6e m (drained hand value 1e-3 m at y = 1)\n",
+              -top_settlement);
+}
+
 TEST(Consolidation, DeformingClosedColumnKeepsItsLiquidMassToQuadrature) {
   // Saturated column under gravity, every side impermeable (the top too): no liquid can
   // leave. The undrained response puts p_L above hydrostatic (B rho_sat > rho_L), so liquid

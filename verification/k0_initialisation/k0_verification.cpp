@@ -5,6 +5,13 @@
 // Genuchten formula. Bound: 1 % of the largest |reference| (max norm) for both. Then the
 // deck's quasi-static relaxation stage runs and the same comparison is reported (bound 2 %):
 // the K0 state must be (nearly) in equilibrium.
+//
+// --hand-over --phreatic-after Y (deck k0_column_hand_over.yaml, issue P5): the deck ends
+// with an implicit seepage stage that raises the water table to Y and a quasi-static stage
+// with `Liquid Pressure: held`. The run without that last stage (the plain hand-over) and
+// the whole run are compared with the profile for a table at Y (no cap): after the held
+// stage sigma'_yy and p_L must be within the relaxed bound, and p_L of every point must be
+// what the implicit stage handed over, exactly.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -116,11 +123,74 @@ Errors compare(const Reference& ref, const Deck& deck, const argine::MaterialPoi
   return {err_s / max_s, err_p / max_p};
 }
 
+/// p_L of every point by its permanent id.
+std::vector<double> pressuresById(const argine::MaterialPoints& points) {
+  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.id);
+  auto pl = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.pressure_liquid);
+  std::vector<double> by_id(points.count, 0.0);
+  for (int p = 0; p < points.count; ++p) by_id.at(id(p)) = pl(p);
+  return by_id;
+}
+
+/// The hand-over check (see the file comment): the reference for the new table, the run
+/// without its last (held) stage and the whole run.
+int verifyHandOver(const Deck& deck, Reference ref, double phreatic_after,
+                   const std::string& output, double relaxed_bound) {
+  const argine::StageSpec& last = deck.stages.back();
+  if (deck.stages.size() < 2 || !last.hold_liquid_pressure)
+    throw argine::InputError(deck.path,
+                             "--hand-over expects a last stage with Liquid Pressure: held");
+  ref.phreatic = phreatic_after;
+  ref.cap = 1e300;
+  ref.y.clear();
+  ref.sigma.clear();
+  double bottom = 1e300;
+  for (const auto& l : ref.layers) bottom = std::min(bottom, l.bottom);
+  ref.integrate(bottom, 1e-4);
+
+  argine::RunOptions run;
+  run.quiet = true;
+  Deck handed = deck;  // up to the implicit stage: the plain hand-over
+  handed.stages.pop_back();
+  run.output_directory = output + "/hand_over_plain";
+  argine::Simulation plain(handed, run);
+  plain.run();
+  const Errors before = compare(ref, deck, plain.points(), output + "/k0_points_handed.csv");
+  run.output_directory = output + "/hand_over_held";
+  argine::Simulation held(deck, run);
+  held.run();
+  const Errors after = compare(ref, deck, held.points(), output + "/k0_points_held.csv");
+  for (const auto& line : held.stageLog()) std::printf("  log: %s\n", line.c_str());
+  const std::vector<double> p_before = pressuresById(plain.points());
+  const std::vector<double> p_after = pressuresById(held.points());
+  double changed = 0;
+  for (std::size_t k = 0; k < p_before.size(); ++k)
+    changed = std::max(changed, std::abs(p_after[k] - p_before[k]));
+
+  std::printf("Hand-over (table at %.3g m, %d points), max error / max |reference|:\n",
+              phreatic_after, held.points().count);
+  std::printf("  implicit stage handed over:   sigma'_yy %.3e   p_L %.3e\n", before.stress,
+              before.pressure);
+  std::printf("  after the held-pressure stage: sigma'_yy %.3e   p_L %.3e   (bound %.3g)\n",
+              after.stress, after.pressure, relaxed_bound);
+  std::printf("  p_L changed by the held stage: max %.3e Pa (must be 0)\n", changed);
+  std::ofstream errors(output + "/k0_hand_over_errors.csv");
+  errors << "state,stress_error,pressure_error,bound\n"
+         << "handed," << before.stress << "," << before.pressure << ",\n"
+         << "held," << after.stress << "," << after.pressure << "," << relaxed_bound << "\n";
+  const bool ok = after.stress <= relaxed_bound && after.pressure <= relaxed_bound &&
+                  changed == 0 && p_before.size() == p_after.size();
+  std::printf("Hand-over with the skeleton in equilibrium: %s\n",
+              ok ? "PASSED" : "FAILED (bound exceeded)");
+  return ok ? 0 : av::kExitBoundExceeded;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   return av::runVerification(argc, argv, [](int argc_, char** argv_) {
-    const av::CommandLine options(argc_, argv_, {"deck", "output", "bound", "relaxed-bound"});
+    const av::CommandLine options(
+        argc_, argv_, {"deck", "output", "bound", "relaxed-bound", "hand-over", "phreatic-after"});
     const std::string deck_path = options.text("deck", ARGINE_K0_DECK);
     const std::string output = options.text("output", ".");
     const double bound = options.number("bound", 0.01);
@@ -152,6 +222,9 @@ int main(int argc, char** argv) {
     double bottom = 1e300;
     for (const auto& l : ref.layers) bottom = std::min(bottom, l.bottom);
     ref.integrate(bottom, 1e-4);
+    if (options.has("hand-over"))
+      return verifyHandOver(deck, ref, options.number("phreatic-after", ref.phreatic), output,
+                            relaxed_bound);
     {
       std::ofstream profile(output + "/k0_reference_profile.csv");
       profile << "y,stress_total_reference,liquid_pressure_reference\n";

@@ -231,12 +231,15 @@ struct MaterialChangeSpec {
 struct StageSpec {
   std::string name;
   SolverKind solver = SolverKind::Explicit;
-  Real duration = 0;                 ///< (s)
-  Real gravity = 9.81;               ///< magnitude (m/s^2), acting in -y; 0 switches it off
-  Real local_damping = 0;            ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
-  Real mass_scaling = 1;             ///< factor >= 1 on the nodal masses
-  Real solid_pic_fraction = 0;       ///< PIC share of the solid velocity update (VelocityBlend)
-  Real liquid_pic_fraction = 0;      ///< PIC share of the liquid velocity update
+  Real duration = 0;             ///< (s)
+  Real gravity = 9.81;           ///< magnitude (m/s^2), acting in -y; 0 switches it off
+  Real local_damping = 0;        ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
+  Real mass_scaling = 1;         ///< factor >= 1 on the nodal masses
+  Real solid_pic_fraction = 0;   ///< PIC share of the solid velocity update (VelocityBlend)
+  Real liquid_pic_fraction = 0;  ///< PIC share of the liquid velocity update
+  /// `Liquid Pressure: held` (quasi-static stages): p_L and S_L stay as the stage found them
+  /// while the skeleton settles into equilibrium with them; the liquid moves with the solid.
+  bool hold_liquid_pressure = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

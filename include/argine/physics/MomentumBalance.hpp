@@ -6,7 +6,8 @@
 /// with lumped masses (4.38-4.40) multiplied by the mass-scaling factor, and local damping
 /// (Anura3D style): each phase's unbalanced force F gets -alpha |F| sign(v), component by
 /// component, v the phase's nodal velocity at t^k. Nodes without liquid mass skip the liquid
-/// equation (a_L = 0). In fixed-skeleton mode a_S = 0 and only the liquid moves.
+/// equation (a_L = 0). In fixed-skeleton mode a_S = 0 and only the liquid moves. With the
+/// liquid pressure held, the liquid moves with the solid: one mixture equation per node.
 
 #include "argine/core/Types.hpp"
 
@@ -21,6 +22,9 @@ struct MomentumSettings {
   Real local_damping = 0;       ///< alpha in [0, 1)
   Real mass_scaling = 1;        ///< factor >= 1 on the nodal masses (inertia only)
   bool fixed_skeleton = false;  ///< hold the solid at rest (seepage only)
+  /// Held liquid pressure (StageSpec::hold_liquid_pressure): the liquid moves with the solid
+  /// at every node, a_L = a_S = damped (f^ext - f^int) / (M_S + M_L); no liquid equation.
+  bool liquid_with_solid = false;
 };
 
 /// The local damping force of one component: -alpha |force| sign(velocity).

@@ -22,6 +22,7 @@ struct PointUpdateViews {
   Kokkos::View<const PointMaterial*, MemSpace> materials_m;  ///< parameters by material id
   MaterialPoints points;                                     ///< the point fields
   PointRates rates;                                          ///< this step's increments
+  bool hold_liquid_pressure = false;  ///< `Liquid Pressure: held`: p_L, rho_L, S_L kept
 };
 
 /// Step 6 (done first, the mass balance needs the new pore volume), solid mass balance
@@ -39,10 +40,17 @@ KOKKOS_INLINE_FUNCTION void updatePorosityAndVolume(const PointUpdateViews& v, i
 /// it, per material) in conservative form (LiquidState.hpp): M_L += the relative flux of the
 /// step, then p_L such that n S_L(p_L) rho_L(p_L) V = M_L with the new n and V; rho_L from
 /// 4.13. Liquid-carrying points only. With a fixed skeleton the strain increments are zero
-/// and only the liquid flux changes p_L.
+/// and only the liquid flux changes p_L. With the liquid pressure held, p_L, rho_L and S_L
+/// stay and M_L = n S_L rho_L V follows the new pore volume instead (liquid enters or leaves
+/// as the skeleton swells or compresses: a drained response).
 KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int p) {
   const PointMaterial& material = v.materials_m(v.points.material(p));
   if (!carriesLiquid(material.phase)) return;
+  if (v.hold_liquid_pressure) {  // drained: the pore volume fills at the held p_L (4.47)
+    v.points.mass_liquid(p) = v.points.porosity(p) * v.points.saturation(p) *
+                              v.points.density_liquid(p) * v.points.volume(p);
+    return;
+  }
   const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
                           v.rates.strain_increment_p(p, ZZ);
   // (i) the relative flux moves liquid mass (V is already V^{k+1}: recover V^k).
@@ -127,6 +135,6 @@ KOKKOS_INLINE_FUNCTION void updatePointPosition(const PointUpdateViews& v, int p
 /// one pass; returns the liquid mass and the number of points whose new state is invalid
 /// (pointStateIsValid); the kinetic energies are left 0 (the G2P sums them).
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
-                              MaterialPoints& points);
+                              MaterialPoints& points, bool hold_liquid_pressure = false);
 
 }  // namespace argine
