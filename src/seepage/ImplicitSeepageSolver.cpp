@@ -47,6 +47,14 @@ struct ImplicitSeepageSolver::Impl {
   // (current iterate): the SWRC/HCC are evaluated once per point and iteration, not once per
   // term (residual storage, residual flux, matrix).
   std::vector<Real> point_p_old, point_s_old, point_p, point_mobility;
+  // The hand-over from the points: the nodal start is the L2 projection of their p_L, which
+  // stores a slightly different liquid mass than they hold unless p_L is linear. Until the
+  // first accepted step the old level is the points' own p_L (pressure_from_points, per
+  // liquid point), so that step's storage change starts from the mass they hold and the
+  // projection's difference is not created or destroyed (the run's liquid mass is kept
+  // across the explicit -> implicit hand-over). Cleared by setNodalPressure and handOver.
+  bool old_level_from_points = false;
+  std::vector<Real> pressure_from_points;
   std::vector<Real> matrix_values;
   std::vector<Point> liquid_points;
   std::vector<int> dof_of_node, node_of_dof;
@@ -112,7 +120,7 @@ struct ImplicitSeepageSolver::Impl {
     point_s_old.resize(liquid_points.size());
     for (std::size_t i = 0; i < liquid_points.size(); ++i) {
       const Point& point = liquid_points[i];
-      point_p_old[i] = interpolate(point, old);
+      point_p_old[i] = old_level_from_points ? pressure_from_points[i] : interpolate(point, old);
       point_s_old[i] = saturationAndConductivity(material(point), point_p_old[i]).saturation;
     }
   }
@@ -208,9 +216,12 @@ struct ImplicitSeepageSolver::Impl {
 
   Real pointsLiquidMass(const std::vector<Real>& nodal) const {
     Real mass = 0;
-    for (const Point& point : liquid_points)
-      mass +=
-          point.porosity * point.volume * liquidContent(material(point), interpolate(point, nodal));
+    for (std::size_t i = 0; i < liquid_points.size(); ++i) {
+      const Point& point = liquid_points[i];
+      const Real pressure =
+          old_level_from_points ? pressure_from_points[i] : interpolate(point, nodal);
+      mass += point.porosity * point.volume * liquidContent(material(point), pressure);
+    }
     return mass;
   }
 
@@ -363,10 +374,15 @@ void ImplicitSeepageSolver::projectPressureFromPoints() {
   }
   s.system->endAssembly();
   s.system->solve(rhs, s.p);
+  s.pressure_from_points.resize(s.liquid_points.size());
+  for (std::size_t i = 0; i < s.liquid_points.size(); ++i)
+    s.pressure_from_points[i] = pressure(s.liquid_points[i].index);
+  s.old_level_from_points = true;
 }
 
 void ImplicitSeepageSolver::setNodalPressure(const std::function<Real(Real, Real)>& pressure) {
   Impl& s = *impl_;
+  s.old_level_from_points = false;  // the caller's nodal field is the start
   const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.mesh.coordinates);
   for (int dof = 0; dof < s.dofs(); ++dof) {
     const int node = s.node_of_dof[dof];
@@ -501,9 +517,10 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   for (int i = 0; i < dofs(); ++i) inflow += isFixed(i) ? residual[i] : supply[i];
   result.inflow = inflow * dt;
   Real storage_change = 0, max_ds = 0;
-  for (const Point& point : liquid_points) {
+  for (std::size_t i = 0; i < liquid_points.size(); ++i) {
+    const Point& point = liquid_points[i];
     const PointMaterial& mat = material(point);
-    const Real p_new = interpolate(point, p), p_prev = interpolate(point, p_old);
+    const Real p_new = interpolate(point, p), p_prev = point_p_old[i];
     storage_change += point.porosity * point.volume * liquidContentChange(mat, p_new, p_prev);
     max_ds = std::max(max_ds, std::fabs(saturationAndConductivity(mat, p_new).saturation -
                                         saturationAndConductivity(mat, p_prev).saturation));
@@ -518,6 +535,7 @@ SeepageStepResult ImplicitSeepageSolver::step(Real dt) {
   Impl& s = *impl_;
   const SeepageStepResult result = s.step(dt);
   if (result.converged) {
+    s.old_level_from_points = false;  // the nodal field holds the points' mass from now on
     s.time += dt;
     ++s.totals.steps;
     s.totals.inflow += result.inflow;
@@ -562,6 +580,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
 
 void ImplicitSeepageSolver::handOver() {
   Impl& s = *impl_;
+  s.old_level_from_points = false;  // the points take the nodal field's state below
   auto pressure =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.pressure_liquid);
   auto density = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.density_liquid);

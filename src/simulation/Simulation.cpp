@@ -207,6 +207,7 @@ void Simulation::runStage(const StageSpec& stage) {
     dt = choice.time_step;
     dt = std::min(dt, std::min(next_output_, end) - solver_->time());
     solver_->step(dt);
+    implicit_liquid_mass_ = -1;  // the explicit diagnostics hold the liquid mass from now on
     accumulateBoundaryFluxes();
     checkGuards(stage);  // (P8) before any output of this step
     ++summary_.steps;
@@ -285,11 +286,18 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
   const long long steps_before = summary_.steps;
   progress_->beginStage(stage.name, start, stage.duration);
   Real target = start;
+  Real inflow_counted = 0;  // kg/m of this stage's boundary inflow already in the totals
   while (seepage.time() < end - tolerance) {
     target = std::min(end, target + interval);
     if (end - target <= tolerance) target = end;
     seepage.advanceTo(target);
     seepage.handOver();
+    // The run's liquid bookkeeping (boundary-flux CSV, mass-balance guard) goes on through
+    // the implicit stage: its stored mass and its inflow through all conditions.
+    implicit_liquid_mass_ = seepage.liquidMass();
+    flux_all_nodes_cumulative_ +=
+        (seepage.totals().inflow - inflow_counted) / solver_->referenceLiquidDensity();
+    inflow_counted = seepage.totals().inflow;
     solver_->setTime(seepage.time());
     summary_.steps = steps_before + seepage.totals().steps;
     summary_.point_updates += seepage.totals().steps * points_.count;
@@ -457,10 +465,15 @@ void Simulation::accumulateBoundaryFluxes() {
   if (!conditions.empty()) flux_all_nodes_cumulative_ += volumes[conditions.size()];
 }
 
+Real Simulation::liquidMassNow() const {
+  if (implicit_liquid_mass_ >= 0) return implicit_liquid_mass_;
+  return solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass
+                                         : initial_liquid_mass_;
+}
+
 void Simulation::writeBoundaryFluxes() {
   if (!boundary_flux_) return;  // also on ranks > 0
-  const Real mass =
-      solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass : initial_liquid_mass_;
+  const Real mass = liquidMassNow();
   std::vector<Real> row{solver_->time(),
                         (mass - initial_liquid_mass_) / solver_->referenceLiquidDensity(),
                         flux_all_nodes_cumulative_};

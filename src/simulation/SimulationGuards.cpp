@@ -15,8 +15,7 @@ void Simulation::beginStageGuards(const StageSpec& stage) {
   (void)stage;
   if (!guards_) guards_ = std::make_unique<RunGuards>(deck_.guards);
   const Real density = solver_->referenceLiquidDensity();
-  const Real mass =
-      solver_->diagnostics().step > 0 ? solver_->diagnostics().liquid_mass : initial_liquid_mass_;
+  const Real mass = liquidMassNow();
   guards_->beginStage(mass / density, flux_all_nodes_cumulative_, initial_liquid_mass_ / density);
 }
 
@@ -32,8 +31,10 @@ void Simulation::checkGuards(const StageSpec& stage) {
     const std::string line = guards_->handleLeavingPoints(points_, place);  // RunError if stop
     if (!line.empty()) log(line);
   }
-  // The net inflow through the nodes is known where the stage has hydraulic conditions.
-  if (boundary_flux_ && !solver_->hydraulicConditions().conditions().empty())
+  // The net inflow through the nodes is known where the stage has hydraulic conditions. A
+  // stage with the liquid pressure held exchanges liquid with the pore volume by design.
+  if (boundary_flux_ && !solver_->hydraulicConditions().conditions().empty() &&
+      !stage.hold_liquid_pressure)
     warn(guards_->checkMassBalance(d.liquid_mass / solver_->referenceLiquidDensity(),
                                    flux_all_nodes_cumulative_, place));
   warn(guards_->checkKineticEnergy(d.kinetic_energy_solid + d.kinetic_energy_liquid,

@@ -6,8 +6,13 @@
 
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
@@ -83,6 +88,83 @@ std::filesystem::path freshDirectory(const std::string& name) {
 
 Deck fallingColumn(const std::string& guards) {
   return parseDeck(*Teuchos::getParametersFromYamlString(kFallingColumn + guards), "");
+}
+
+// A column wetted from below on the implicit path between two explicit fixed-skeleton
+// stages. The run's liquid bookkeeping (<name>_boundary_flux.csv, the mass-balance guard)
+// goes on through the implicit stage, and the hand-overs both ways keep the liquid mass: the
+// projection of the points' p_L onto the implicit solver's nodes is not exact after the
+// explicit stage (4.6e-7 m3/m of 7.8e-4 m3/m inflow before the first implicit step started
+// from the points' own state).
+const std::string kWettedColumn = R"(argine:
+  Mesh:
+    Generate: {Type: rectangle, Element: tri3, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right (m): [0.1, 1.0]}
+  Materials:
+    soil:
+      Block: soil
+      Phase Model: unsaturated
+      Porosity: 0.4
+      Solid Density (kg/m3): 2700
+      Solid: {Model: linear elastic, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.3}
+      Liquid: {Density (kg/m3): 1000, Bulk Modulus (Pa): 8.0e7, Viscosity (Pa s): 1.0e-3}
+      Retention: {Model: van Genuchten, Reference Pressure (Pa): 3000, Lambda: 0.7, Minimum Saturation: 0.125, Maximum Saturation: 1.0}
+      Conductivity: {Model: constant, Saturated Conductivity (m/s): 1.0e-4}
+  Initialisation:
+    Method: K0 procedure
+    Ground Surface (m): [0.0, 1.0, 0.1, 1.0]
+    Phreatic Surface (m): [0.0, 0.5, 0.1, 0.5]
+  Stages:
+    before:
+      Solver: fixed skeleton
+      Duration (s): 0.01
+      Output Interval (s): 0.005
+      Boundary Conditions:
+        base: {Type: total head, Side Set: bottom, Total Head (m): 0.5}
+    wetting:
+      Solver: implicit seepage
+      Duration (s): 200
+      Output Interval (s): 50
+      Implicit Seepage: {Initial Step (s): 1, Maximum Step (s): 10}
+      Boundary Conditions:
+        base: {Type: total head, Side Set: bottom, Total Head (m): 0.8}
+    after:
+      Solver: fixed skeleton
+      Duration (s): 0.01
+      Output Interval (s): 0.005
+      Boundary Conditions:
+        base: {Type: total head, Side Set: bottom, Total Head (m): 0.8}
+  Output: {Name: wetted}
+)";
+
+TEST(RunGuards, LiquidBookkeepingRunsThroughAnImplicitStage) {
+  RunOptions options;
+  options.output_directory = freshDirectory("wetted").string();
+  options.quiet = true;
+  Simulation simulation(parseDeck(*Teuchos::getParametersFromYamlString(kWettedColumn), ""),
+                        options);
+  simulation.run();
+  for (const auto& line : simulation.stageLog())
+    EXPECT_FALSE(contains(line, "mass balance")) << line;  // the guard's baseline is right
+  // <name>_boundary_flux.csv: time, storage_change, net_inflow_all_nodes, ...
+  std::ifstream csv(options.output_directory + "/wetted_boundary_flux.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::array<Real, 3>> rows;
+  while (std::getline(csv, line)) {
+    std::stringstream cells(line);
+    std::array<Real, 3> row{};
+    std::string cell;
+    for (Real& value : row) {
+      std::getline(cells, cell, ',');
+      value = std::stod(cell);
+    }
+    rows.push_back(row);
+  }
+  ASSERT_GE(rows.size(), 8u);
+  Real largest = 0;
+  for (const auto& row : rows) largest = std::max(largest, std::fabs(row[2]));
+  EXPECT_GT(largest, 5e-4);  // m3/m (7.8e-4 measured): the implicit inflow is counted
+  for (const auto& row : rows) EXPECT_NEAR(row[1], row[2], 1e-8 * largest) << "t = " << row[0];
 }
 
 TEST(RunGuards, PointsLeavingTheMeshStopTheRunByDefault) {

@@ -80,6 +80,9 @@ class Simulation {
   void openBoundaryFluxLog();
   void accumulateBoundaryFluxes();
   void writeBoundaryFluxes();
+  /// The points' liquid mass now (kg/m, all ranks): after an explicit step its diagnostics,
+  /// after an implicit stage that stage's, before any step the initial mass.
+  Real liquidMassNow() const;
   // issue P4: stage additions, probes
   void log(const std::string& line);
   void applyStageMaterialChanges(const StageSpec& stage);
@@ -115,11 +118,14 @@ class Simulation {
   std::vector<Real> flux_cumulative_;         ///< m^3/m through each since the start
   Real flux_all_nodes_cumulative_ = 0;        ///< net inflow through all nodes (m^3/m)
   Real initial_liquid_mass_ = 0;              ///< sum of the points' M_L at the start (kg/m)
-  std::unique_ptr<ProbeWriter> probes_;       ///< (P4)
-  std::vector<std::string> stage_log_;        ///< (P4)
-  bool initial_output_written_ = false;       ///< (P4) t = 0 written after the first beginStage
-  Real next_probe_time_ = 0;                  ///< (P4)
-  Real initial_time_step_ = 0;  ///< (P4) the first stage's first dt, for the t = 0 row
+  /// The points' liquid mass an implicit stage left (kg/m); < 0 once an explicit step has
+  /// run since (the explicit diagnostics then hold it). See liquidMassNow().
+  Real implicit_liquid_mass_ = -1;
+  std::unique_ptr<ProbeWriter> probes_;  ///< (P4)
+  std::vector<std::string> stage_log_;   ///< (P4)
+  bool initial_output_written_ = false;  ///< (P4) t = 0 written after the first beginStage
+  Real next_probe_time_ = 0;             ///< (P4)
+  Real initial_time_step_ = 0;           ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
   std::unique_ptr<RunGuards> guards_;  ///< (P8)
 
