@@ -8,9 +8,11 @@
 // point-wise bound is asserted only with --assert (not met: on Tri3 the points of a triangle
 // carry its centroid's p_L, see doc/verification.md). Asserted always: the element means
 // against the reference at the element centroids, within the same 2 %. Also prints the explicit
-// run's liquid balance |storage - inflow| / inflow and writes
-// infiltration_column_explicit_profiles.csv (time, y, p_L, S_L of every point; the reference
-// nodes as run "reference").
+// run's liquid balance |storage - inflow| / inflow and writes <tag>_profiles.csv (time, y,
+// p_L, S_L of every point; the reference nodes as run "reference") and <tag>_cost.csv (the
+// errors against the wall and CPU time of the explicit run). Options: --element-size H and
+// --mass-scaling F change the explicit column (the accuracy-against-cost study,
+// scripts/accuracy_cost.sh), --tag NAME (default infiltration_column_explicit).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -79,10 +81,19 @@ Real interpolate(const Profile& profile, Real y) {
 }
 
 int run(int argc, char** argv) {
-  const av::CommandLine options(argc, argv, {"output", "assert", "duration"});
+  const av::CommandLine options(
+      argc, argv, {"output", "assert", "duration", "element-size", "mass-scaling", "tag"});
   const std::string output = options.text("output", ".");
+  const std::string tag = options.text("tag", "infiltration_column_explicit");
   const argine::Deck implicit_deck = argine::readDeck(ARGINE_V3_DECK);
-  const argine::Deck explicit_deck = argine::readDeck(ARGINE_V3_EXPLICIT_DECK);
+  argine::Deck explicit_deck = argine::readDeck(ARGINE_V3_EXPLICIT_DECK);
+  // The accuracy-against-cost study varies the explicit column (one element wide).
+  const Real element_size =
+      options.number("element-size", explicit_deck.mesh.generator.element_size);
+  explicit_deck.mesh.generator.element_size = element_size;
+  explicit_deck.mesh.generator.upper_right[0] = element_size;
+  explicit_deck.stages.at(0).mass_scaling =
+      options.number("mass-scaling", explicit_deck.stages.at(0).mass_scaling);
   const argine::RetentionSpec retention = implicit_deck.materials.at(0).retention;
   const Real h = implicit_deck.mesh.generator.element_size;
   const Real dt = implicit_deck.stages.at(0).seepage.max_step;
@@ -93,7 +104,7 @@ int run(int argc, char** argv) {
 
   av::HydraulicRun explicit_run(explicit_deck);
   const Real duration = options.number("duration", kTimes.back());
-  std::ofstream out(output + "/infiltration_column_explicit_profiles.csv");
+  std::ofstream out(output + "/" + tag + "_profiles.csv");
   out << "run,time,y,p_L,S_L\n";
   Real worst_p = 0, worst_s = 0, worst_balance = 0, worst_mean_p = 0, worst_mean_s = 0;
   // Element means at the element centroids: on Tri3 the points of a triangle share one flux
@@ -153,9 +164,9 @@ int run(int argc, char** argv) {
     std::printf(
         "[ V3x ] t = %3.0f s: explicit vs implicit reference max |dp_L| %.2f %% of the "
         "range (%.0f Pa), |dS_L| %.2f %% of the range; storage %.4e inflow %.4e m3/m; "
-        "%ld steps, %.1f s wall\n",
+        "%ld steps, %.1f s wall, %.1f s CPU\n",
         kTimes[k], 100 * error_p, range_p, 100 * error_s, storage, inflow, explicit_run.steps(),
-        explicit_run.wallSeconds());
+        explicit_run.wallSeconds(), explicit_run.cpuSeconds());
     std::printf(
         "[ V3x ] t = %3.0f s: element means vs the reference at the element centroids: "
         "|dp_L| %.2f %%, |dS_L| %.2f %% of the range\n",
@@ -171,6 +182,13 @@ int run(int argc, char** argv) {
   // Asserted: the balance and the element means (2 %, the V3 bound applied to what a Tri3
   // element carries); the point-wise V3 criterion only with --assert (not met: 8.8 %).
   const bool means_met = worst_mean_p <= 0.02 && worst_mean_s <= 0.02;
+  std::ofstream cost(output + "/" + tag + "_cost.csv");
+  cost << "run,path,element_size,mass_scaling,wall_seconds,cpu_seconds,steps,p_error,s_error,"
+          "p_error_means,s_error_means\n"
+       << tag << ",explicit," << element_size << "," << explicit_deck.stages.at(0).mass_scaling
+       << "," << explicit_run.wallSeconds() << "," << explicit_run.cpuSeconds() << ","
+       << explicit_run.steps() << "," << worst_p << "," << worst_s << "," << worst_mean_p << ","
+       << worst_mean_s << "\n";
   const bool ok = worst_balance <= 1e-3 && means_met && (!options.has("assert") || met);
   std::printf("[ V3x ] %s\n", ok ? "PASS" : "FAIL: a bound is exceeded");
   return ok ? 0 : av::kExitBoundExceeded;

@@ -14,8 +14,14 @@
 //     reads its local mean). The same fit is applied to the implicit run's own points and
 //     printed, to show what the fit alone changes.
 // Error: max |p - p_ref| over all samples / (max - min of p_ref over all samples); the same
-// for S_L. Writes <tag>_sections.csv (implicit points, same format as the explicit driver),
-// <tag>_profiles.csv (sampled profiles of every run) and <tag>_cost.csv (error vs wall time).
+// for S_L (SectionProfiles.hpp). Writes <tag>_sections.csv (implicit points, same format as
+// the explicit driver), <tag>_profiles.csv (sampled profiles of every run) and <tag>_cost.csv
+// (error against wall and CPU time of every run).
+// The accuracy-against-cost study (scripts/accuracy_cost.sh): --study adds implicit runs on
+// h 0.1 and 0.025 m, coarse steps and Crank-Nicolson; --reference-profiles FILE takes the
+// reference's samples from an earlier <tag>_profiles.csv instead of rerunning it;
+// --explicit-runs P1,P2,... reads explicit runs of levee_seepage_verification (their
+// P_sections.csv and P_cost.csv).
 // Asserts (VERIFICATION.md V4: agreement within 3 % of the p_L range): the default implicit
 // run vs the reference, and the liquid mass balance (|storage - inflow| <= 1e-10 of the
 // largest of |storage|, |inflow|, or 1e-10 kg/m when both vanish). The explicit comparison is
@@ -24,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -31,6 +38,7 @@
 #include <vector>
 
 #include "CommandLine.hpp"
+#include "SectionProfiles.hpp"
 #include "VerificationMain.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/physics/LiquidState.hpp"
@@ -43,30 +51,11 @@
 
 namespace av = argine::verification;
 using argine::Real;
+using namespace argine::verification::v4;
 
 namespace {
 
 constexpr Real kWaterTable = 0.2;
-constexpr Real kStrip = 0.03;    // points this close to a section belong to it (m)
-constexpr Real kFitHalf = 0.05;  // half-height of the least-squares window (m)
-const std::vector<Real> kTimes{72, 160, 300};
-const std::vector<std::pair<std::string, Real>> kSections{{"S1", 1.5}, {"S2", 3.0}};
-
-std::vector<Real> sampleHeights() {
-  std::vector<Real> y;
-  for (int k = 0; k < 30; ++k) y.push_back(0.0125 + 0.025 * k);
-  return y;
-}
-
-/// Samples (p, S) in the order time, section, height; NaN where a run has no value.
-struct Samples {
-  std::vector<Real> p, s;
-};
-
-struct PointRow {
-  Real t, x, y, p, s;
-  std::string section;
-};
 
 /// p_L = rho_L g (0.2 - y) at every point, with rho_L, S_L, k, M_L to match (4.13, 4.47).
 void hydrostaticProfile(const std::vector<argine::MaterialSpec>& materials,
@@ -80,80 +69,13 @@ void hydrostaticProfile(const std::vector<argine::MaterialSpec>& materials,
   Kokkos::deep_copy(points.pressure_liquid, P);
 }
 
-/// Least-squares plane through the rows of one (time, section) within kFitHalf of y, at
-/// (x_s, y); NaN with fewer than 3 rows.
-std::pair<Real, Real> planeFit(const std::vector<const PointRow*>& rows, Real xs, Real y) {
-  Real A[3][3] = {}, bp[3] = {}, bs[3] = {};
-  int count = 0;
-  for (const PointRow* r : rows) {
-    if (std::fabs(r->y - y) > kFitHalf) continue;
-    const Real phi[3] = {1, r->x - xs, r->y - y};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) A[i][j] += phi[i] * phi[j];
-      bp[i] += phi[i] * r->p;
-      bs[i] += phi[i] * r->s;
-    }
-    ++count;
-  }
-  const Real nan = std::nan("");
-  if (count < 3) return {nan, nan};
-  // Cramer's rule for the constant term a (3 x 3).
-  auto det = [](const Real m[3][3]) {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  };
-  const Real d = det(A);
-  if (std::fabs(d) < 1e-30) return {nan, nan};
-  auto first = [&](const Real b[3]) {
-    Real m[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) m[i][j] = j == 0 ? b[i] : A[i][j];
-    return det(m) / d;
-  };
-  return {first(bp), first(bs)};
-}
-
-Samples fitRows(const std::vector<PointRow>& rows) {
-  Samples out;
-  const std::vector<Real> heights = sampleHeights();
-  for (const Real t : kTimes)
-    for (const auto& [name, xs] : kSections) {
-      std::vector<const PointRow*> chosen;
-      for (const PointRow& r : rows)
-        if (std::fabs(r.t - t) < 1e-6 && r.section == name) chosen.push_back(&r);
-      for (const Real y : heights) {
-        const auto [p, s] = planeFit(chosen, xs, y);
-        out.p.push_back(p);
-        out.s.push_back(s);
-      }
-    }
-  return out;
-}
-
-std::vector<PointRow> readSectionCsv(const std::string& path) {
-  std::vector<PointRow> rows;
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<std::string> cells;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    if (cells.size() < 6) continue;
-    rows.push_back({std::stod(cells[0]), std::stod(cells[2]), std::stod(cells[3]),
-                    std::stod(cells[4]), std::stod(cells[5]), cells[1]});
-  }
-  return rows;
-}
-
 struct RunResult {
   std::string name;
   Samples fe;          // finite-element field at the samples
   Samples points_fit;  // the plane fit through the run's own points
   std::vector<PointRow> rows;
   Real wall_seconds = 0;
+  Real cpu_seconds = 0;  // processor time: the wall time on an idle core
   long long steps = 0;
   Real balance = 0;  // |storage - inflow| / max(|storage|, |inflow|)
 };
@@ -177,11 +99,18 @@ Real feValue(const argine::Mesh& mesh, const std::vector<Real>& nodal, Real x, R
   return std::nan("");
 }
 
-RunResult runImplicit(const argine::Deck& base, const std::string& name, Real element_size,
-                      Real max_step, Real max_saturation_change) {
+/// One implicit run's settings (the deck's own for what is not named here).
+struct ImplicitSettings {
+  std::string name;
+  Real element_size, max_step, max_saturation_change, theta = 1;
+};
+
+RunResult runImplicit(const argine::Deck& base, const ImplicitSettings& settings) {
+  const auto& [name, element_size, max_step, max_saturation_change, theta] = settings;
   argine::Deck deck = base;
   deck.mesh.generator.element_size = element_size;
   argine::StageSpec stage = deck.stages.at(0);
+  stage.seepage.theta = theta;
   stage.seepage.max_step = max_step;
   stage.seepage.initial_step = std::min(stage.seepage.initial_step, max_step);
   stage.seepage.max_saturation_change = max_saturation_change;
@@ -191,6 +120,7 @@ RunResult runImplicit(const argine::Deck& base, const std::string& name, Real el
   hydrostaticProfile(deck.materials, points);
 
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   argine::ImplicitSeepageSolver solver(mesh, points, deck.materials);
   solver.beginStage(stage);
   solver.handOver();  // the points' rho_L, S_L, M_L consistent with the nodal start
@@ -222,57 +152,87 @@ RunResult runImplicit(const argine::Deck& base, const std::string& name, Real el
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = static_cast<Real>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   const Real stored = solver.liquidMass() - initial_mass, inflow = solver.totals().inflow;
   const Real scale = std::max({std::fabs(stored), std::fabs(inflow), Real(1e-10)});
   result.balance = std::fabs(stored - inflow) / scale;
   result.steps = solver.totals().steps;
   result.points_fit = fitRows(result.rows);
   std::printf(
-      "[ V4i ] %-22s h = %.4f m, max step %.3g s, dS %.3g: %lld steps, %.2f s wall, "
-      "%d points, storage %.6g kg/m, inflow %.6g kg/m, balance %.2e\n",
-      name.c_str(), element_size, max_step, max_saturation_change, result.steps,
-      result.wall_seconds, points.count, stored, inflow, result.balance);
+      "[ V4i ] %-22s h = %.4f m, max step %.3g s, dS %.3g, theta %.2g: %lld steps, %.2f s "
+      "wall, %.2f s CPU, %d points, storage %.6g kg/m, inflow %.6g kg/m, balance %.2e\n",
+      name.c_str(), element_size, max_step, max_saturation_change, theta, result.steps,
+      result.wall_seconds, result.cpu_seconds, points.count, stored, inflow, result.balance);
   return result;
 }
 
-/// max |a - ref| / range(ref) for p and S (samples where both exist); the count compared.
-struct Errors {
-  Real p = 0, s = 0;
-  int compared = 0;
+/// One explicit run of the study: <prefix>_sections.csv and <prefix>_cost.csv written by
+/// levee_seepage_verification (element size, mass scaling, points, steps, wall and CPU time).
+struct ExplicitRun {
+  std::string name;
+  std::vector<PointRow> rows;
+  std::map<std::string, std::string> cost;  // header -> value of <prefix>_cost.csv
 };
-Errors compare(const Samples& a, const Samples& ref) {
-  Real pmin = 1e300, pmax = -1e300, smin = 1e300, smax = -1e300;
-  for (std::size_t k = 0; k < ref.p.size(); ++k) {
-    if (std::isnan(ref.p[k])) continue;
-    pmin = std::min(pmin, ref.p[k]), pmax = std::max(pmax, ref.p[k]);
-    smin = std::min(smin, ref.s[k]), smax = std::max(smax, ref.s[k]);
-  }
-  Errors e;
-  for (std::size_t k = 0; k < ref.p.size(); ++k) {
-    if (std::isnan(ref.p[k]) || std::isnan(a.p[k])) continue;
-    e.p = std::max(e.p, std::fabs(a.p[k] - ref.p[k]) / (pmax - pmin));
-    e.s = std::max(e.s, std::fabs(a.s[k] - ref.s[k]) / (smax - smin));
-    ++e.compared;
-  }
-  return e;
+
+ExplicitRun readExplicitRun(const std::string& prefix) {
+  ExplicitRun run;
+  run.name = prefix.substr(prefix.find_last_of('/') + 1);
+  run.rows = readSectionCsv(prefix + "_sections.csv");
+  std::ifstream in(prefix + "_cost.csv");
+  std::string header, values;
+  std::getline(in, header);
+  std::getline(in, values);
+  std::stringstream h(header), v(values);
+  std::string key, value;
+  while (std::getline(h, key, ',') && std::getline(v, value, ',')) run.cost[key] = value;
+  return run;
+}
+
+std::vector<std::string> splitList(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
 }
 
 int run(int argc, char** argv) {
   const av::CommandLine options(
-      argc, argv, {"deck", "output", "tag", "explicit", "explicit2", "assert-explicit", "quick"});
+      argc, argv,
+      {"deck", "output", "tag", "explicit", "explicit2", "assert-explicit", "quick", "study",
+       "reference-profiles", "explicit-runs"});
   const argine::Deck deck =
       argine::readDeck(options.text("deck", ARGINE_LEVEE_SEEPAGE_IMPLICIT_DECK));
   const std::string output = options.text("output", ".");
   const std::string tag = options.text("tag", "levee_seepage_implicit");
   const bool quick = options.has("quick");
 
-  std::vector<RunResult> runs;
-  runs.push_back(runImplicit(deck, "implicit", 0.05, 1.0, 0.05));
-  if (!quick) {
-    runs.push_back(runImplicit(deck, "implicit_coarse_step", 0.05, 5.0, 0.2));
+  std::vector<ImplicitSettings> settings{{"implicit", 0.05, 1.0, 0.05}};
+  if (!quick) settings.push_back({"implicit_coarse_step", 0.05, 5.0, 0.2});
+  if (options.has("study")) {  // the implicit side of the accuracy-against-cost chart
+    settings.push_back({"implicit_h0.1", 0.1, 1.0, 0.05});
+    settings.push_back({"implicit_h0.1_coarse_step", 0.1, 5.0, 0.2});
+    settings.push_back({"implicit_crank_nicolson", 0.05, 1.0, 0.05, 0.5});
+    settings.push_back({"implicit_h0.025_coarse_step", 0.025, 5.0, 0.2});
   }
-  const RunResult reference = quick ? runImplicit(deck, "reference", 0.05, 0.25, 0.01)
-                                    : runImplicit(deck, "reference", 0.025, 0.5, 0.02);
+  std::vector<RunResult> runs;
+  for (const ImplicitSettings& s : settings) runs.push_back(runImplicit(deck, s));
+  // The reference: the refined implicit run, or its samples from an earlier run's profiles.
+  RunResult reference;
+  if (options.has("reference-profiles")) {
+    const std::string path = options.text("reference-profiles", "");
+    reference.name = "reference";
+    reference.fe = readProfiles(path, "reference");
+    if (reference.fe.p.empty()) {
+      std::printf("[ V4i ] no run 'reference' in %s\n", path.c_str());
+      return av::kExitCannotRun;
+    }
+    std::printf("[ V4i ] reference samples read from %s\n", path.c_str());
+  } else {
+    reference = quick ? runImplicit(deck, {"reference", 0.05, 0.25, 0.01})
+                      : runImplicit(deck, {"reference", 0.025, 0.5, 0.02});
+  }
 
   std::ofstream sections(output + "/" + tag + "_sections.csv");
   sections << "time,section,x,y,pressure,saturation\n";
@@ -280,46 +240,77 @@ int run(int argc, char** argv) {
     sections << r.t << "," << r.section << "," << r.x << "," << r.y << "," << r.p << "," << r.s
              << "\n";
 
+  // error against cost of every run: path, discretisation, cost, error
   std::ofstream cost(output + "/" + tag + "_cost.csv");
-  cost << "run,wall_seconds,steps,p_error,s_error\n";
+  cost << "run,path,element_size,max_step,theta,mass_scaling,wall_seconds,cpu_seconds,steps,"
+          "p_error,s_error\n";
   std::map<std::string, Samples> profiles{{"reference", reference.fe}};
   bool ok = true;
   Errors main_errors;
-  for (const RunResult& r : runs) {
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const RunResult& r = runs[k];
     const Errors e = compare(r.fe, reference.fe);
     const Errors f = compare(r.points_fit, reference.fe);
     std::printf(
         "[ V4i ] %-22s vs reference: max |dp_L| %.3f %% of range, |dS_L| %.3f %% (%d "
         "samples); plane fit through its points: %.3f %%, %.3f %%\n",
         r.name.c_str(), 100 * e.p, 100 * e.s, e.compared, 100 * f.p, 100 * f.s);
-    cost << r.name << "," << r.wall_seconds << "," << r.steps << "," << e.p << "," << e.s << "\n";
+    cost << r.name << ",implicit," << settings[k].element_size << "," << settings[k].max_step << ","
+         << settings[k].theta << ",," << r.wall_seconds << "," << r.cpu_seconds << "," << r.steps
+         << "," << e.p << "," << e.s << "\n";
     profiles[r.name] = r.fe;
     if (r.name == "implicit") main_errors = e;
     if (!(r.balance <= 1e-10)) ok = false;
   }
-  if (!(reference.balance <= 1e-10)) ok = false;
+  if (!options.has("reference-profiles") && !(reference.balance <= 1e-10)) ok = false;
   if (!(main_errors.p <= 0.03) || main_errors.compared < 100) ok = false;
 
+  // The explicit runs: the sections of the CTest runs (--explicit, --explicit2) and those
+  // of the study (--explicit-runs PREFIX,PREFIX,...), each through the plane fit.
+  std::vector<ExplicitRun> explicit_runs;
   for (const char* key : {"explicit", "explicit2"}) {
     if (!options.has(key)) continue;
+    ExplicitRun run;
+    run.name = key;
     const std::string path = options.text(key, "");
-    const std::vector<PointRow> rows = readSectionCsv(path);
-    if (rows.empty()) {
+    run.rows = readSectionCsv(path);
+    if (run.rows.empty()) {
       std::printf("[ V4i ] %s: no rows in %s (run levee_seepage_verification first)\n", key,
                   path.c_str());
       ok = false;
       continue;
     }
-    const Samples fitted = fitRows(rows);
+    explicit_runs.push_back(run);
+  }
+  for (const std::string& prefix : splitList(options.text("explicit-runs", ""))) {
+    ExplicitRun run = readExplicitRun(prefix);
+    if (run.rows.empty() || run.cost.empty()) {
+      std::printf("[ V4i ] %s: no %s_sections.csv or _cost.csv\n", run.name.c_str(),
+                  prefix.c_str());
+      ok = false;
+      continue;
+    }
+    explicit_runs.push_back(run);
+  }
+  for (const ExplicitRun& run : explicit_runs) {
+    // A window of one element at least (the study's coarse explicit meshes).
+    const auto size = run.cost.find("element_size");
+    const Real element = size == run.cost.end() ? 0 : std::stod(size->second);
+    const Samples fitted = fitRows(run.rows, std::max(kFitHalf, element));
     const Errors e = compare(fitted, reference.fe);
     const Errors i = compare(fitted, runs.front().fe);
     std::printf(
-        "[ V4i ] %s (%s): vs reference max |dp_L| %.2f %% of range, |dS_L| %.2f %%; vs "
+        "[ V4i ] %s: vs reference max |dp_L| %.2f %% of range, |dS_L| %.2f %%; vs "
         "implicit %.2f %%, %.2f %% (%d samples)\n",
-        key, path.c_str(), 100 * e.p, 100 * e.s, 100 * i.p, 100 * i.s, e.compared);
-    cost << key << ",,"
+        run.name.c_str(), 100 * e.p, 100 * e.s, 100 * i.p, 100 * i.s, e.compared);
+    auto field = [&](const char* name) {
+      const auto found = run.cost.find(name);
+      return found == run.cost.end() ? std::string() : found->second;
+    };
+    cost << run.name << ",explicit," << field("element_size") << ",,," << field("mass_scaling")
+         << "," << field("wall_seconds") << "," << field("cpu_seconds") << "," << field("steps")
          << "," << e.p << "," << e.s << "\n";
-    profiles[key] = fitted;
+    profiles[run.name] = fitted;
     if (options.has("assert-explicit") && !(e.p <= 0.03)) ok = false;
   }
 
