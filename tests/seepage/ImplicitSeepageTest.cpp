@@ -247,12 +247,8 @@ TEST(ImplicitSeepage, OneAndAllRanksGiveTheSameAnswer) {
   Infiltration one(1e-4, 1.0, self), all(1e-4, 1.0, world);
   one.solver.advanceTo(300);
   all.solver.advanceTo(300);
-  const std::vector<Real> a = one.solver.nodalPressure(), b = all.solver.nodalPressure();
-  Real range = 0, difference = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    range = std::max(range, std::fabs(a[i]));
-    difference = std::max(difference, std::fabs(a[i] - b[i]));
-  }
+  const auto [difference, range] =
+      test::nodalDifference(one.solver.nodalPressure(), all.solver.nodalPressure());
   int ranks = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   std::printf("ranks %d: max |p_1 - p_all| = %.3e Pa (range %.3e Pa), steps %lld vs %lld\n", ranks,

@@ -261,12 +261,8 @@ TEST(NewtonSeepage, OneAndAllRanksGiveTheSameAnswer) {
   DryInfiltration one(spec, 5e-5, self), all(spec, 5e-5, world);
   one.solver.advanceTo(400);
   all.solver.advanceTo(400);
-  const std::vector<Real> a = one.solver.nodalPressure(), b = all.solver.nodalPressure();
-  Real range = 0, difference = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    range = std::max(range, std::fabs(a[i]));
-    difference = std::max(difference, std::fabs(a[i] - b[i]));
-  }
+  const auto [difference, range] =
+      test::nodalDifference(one.solver.nodalPressure(), all.solver.nodalPressure());
   int ranks = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   const SeepageTotals &ta = one.solver.totals(), &tb = all.solver.totals();

@@ -2,6 +2,7 @@
 // Columns for the implicit seepage tests: a one-element-wide Quad4 column with 2 x 2 points
 // per element, materials initialised, and the material helpers.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -68,6 +69,20 @@ inline SeepageBoundaryConditions prescribedBaseOpenTop(const Mesh& mesh, Real ba
   conditions.addPressures(bottom, std::vector<Real>(bottom.size(), base));
   conditions.addSupplies(top, std::vector<Real>(top.size(), 0.0), true);
   return conditions;
+}
+
+/// Largest |a - b| over the nodes and the largest |a| (the range it is measured against): a
+/// 1-rank run against a run over all ranks (the *.OneAndAllRanks* tests).
+struct NodalDifference {
+  Real difference = 0, range = 0;
+};
+inline NodalDifference nodalDifference(const std::vector<Real>& a, const std::vector<Real>& b) {
+  NodalDifference d;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    d.range = std::max(d.range, std::fabs(a[i]));
+    d.difference = std::max(d.difference, std::fabs(a[i] - b[i]));
+  }
+  return d;
 }
 
 }  // namespace argine::test

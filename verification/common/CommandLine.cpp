@@ -59,4 +59,8 @@ std::vector<double> CommandLine::numbers(const std::string& name,
   return values;
 }
 
+std::vector<std::string> CommandLine::texts(const std::string& name) const {
+  return has(name) ? splitCommas(text(name, "")) : std::vector<std::string>{};
+}
+
 }  // namespace argine::verification

@@ -24,6 +24,8 @@ class CommandLine {
   std::vector<int> integers(const std::string& name, const std::vector<int>& fallback) const;
   /// The value of --name as a comma-separated list of numbers.
   std::vector<double> numbers(const std::string& name, const std::vector<double>& fallback) const;
+  /// The value of --name as a comma-separated list of words (none when absent).
+  std::vector<std::string> texts(const std::string& name) const;
 
  private:
   std::map<std::string, std::string> values_;

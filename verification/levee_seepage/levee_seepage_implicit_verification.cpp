@@ -188,15 +188,6 @@ ExplicitRun readExplicitRun(const std::string& prefix) {
   return run;
 }
 
-std::vector<std::string> splitList(const std::string& list) {
-  std::vector<std::string> items;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
 int run(int argc, char** argv) {
   const av::CommandLine options(
       argc, argv,
@@ -282,7 +273,7 @@ int run(int argc, char** argv) {
     }
     explicit_runs.push_back(run);
   }
-  for (const std::string& prefix : splitList(options.text("explicit-runs", ""))) {
+  for (const std::string& prefix : options.texts("explicit-runs")) {
     ExplicitRun run = readExplicitRun(prefix);
     if (run.rows.empty() || run.cost.empty()) {
       std::printf("[ V4i ] %s: no %s_sections.csv or _cost.csv\n", run.name.c_str(),
