@@ -36,7 +36,7 @@ if [[ " $cases " == *" v3 "* ]]; then
   : >"$work/v3_jobs"
   echo "$v3/infiltration_column_verification --output $work >$work/v3_implicit.log 2>&1" \
     >>"$work/v3_jobs"
-  for run in 0.1:10000 0.05:10000 0.025:10000 0.05:1000 0.1:1000; do
+  for run in 0.01:10000 0.1:10000 0.05:10000 0.025:10000 0.05:1000 0.1:1000; do
     h=${run%%:*} ms=${run##*:}
     tag=v3_explicit_h${h}_ms${ms}
     echo "$v3/infiltration_column_explicit_verification --output $work --tag $tag" \
