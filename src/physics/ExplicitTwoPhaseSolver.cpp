@@ -140,6 +140,7 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   ranks_ = &decomposition;
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  outflow_limit_.distribute(exchange_.get(), decomposition.comm(), mesh_.numNodes());
   keepOwnedPoints(decomposition, points_);
   rates_.allocate(points_.count);
   evaluatePointShapes(mesh_, points_, shapes_);

@@ -3,6 +3,7 @@
 #include <Kokkos_ScatterView.hpp>
 
 #include "argine/materials/KernelMath.hpp"
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/PointRates.hpp"
@@ -29,6 +30,10 @@ KOKKOS_INLINE_FUNCTION Real residualMass(const PointMaterial& material, const Ma
 
 }  // namespace
 
+void LiquidOutflowLimit::sumOverRanks(Real* values, int count) const {
+  if (exchange_) MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, comm_);
+}
+
 OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
                                              const MaterialPoints& points,
                                              const PointShapes& shapes, PointRates& rates) {
@@ -52,6 +57,12 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
         }
       },
       excess_sum, limited);
+  {  // over all ranks: every rank takes part in the exchanges below, or none does
+    Real sums[2] = {excess_sum, static_cast<Real>(limited)};
+    sumOverRanks(sums, 2);
+    excess_sum = sums[0];
+    limited = static_cast<int>(sums[1]);
+  }
   totals.limited_points = limited;
   totals.excess = excess_sum;
   if (limited == 0) return totals;
@@ -67,6 +78,7 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
           if (shape_p(p).node[a] + 1 > m) m = shape_p(p).node[a] + 1;
       },
       Kokkos::Max<int>(max_node));
+  if (exchange_) max_node = nodes_;  // the exchange completes arrays of all nodes
   if (static_cast<int>(deficit_i_.extent(0)) < max_node) {
     deficit_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_deficit", max_node);
     gain_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_gain", max_node);
@@ -99,6 +111,7 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
       });
   KE::contribute(deficit_i_, deficit_sv);
   KE::contribute(gain_i_, gain_sv);
+  if (exchange_) exchange_->sum({nodalField(deficit_i_), nodalField(gain_i_)});
 
   // 3. Gaining points give back, through each node, their share of the node's deficit
   //    (at most their gain: the fraction min(1, deficit / gain) of it).
@@ -125,6 +138,12 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
         left += gain - back;
       },
       withdrawn, remaining_gain);
+  {
+    Real sums[2] = {withdrawn, remaining_gain};
+    sumOverRanks(sums, 2);
+    withdrawn = sums[0];
+    remaining_gain = sums[1];
+  }
 
   // 4. A rest (a donor node with no gaining neighbour, or more deficit than gain there):
   //    from all gaining points, in proportion to what they still gain.
@@ -144,6 +163,7 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
           taken += fraction * gain;
         },
         taken_rest);
+    sumOverRanks(&taken_rest, 1);
     withdrawn += taken_rest;
   }
   totals.withdrawn = withdrawn;

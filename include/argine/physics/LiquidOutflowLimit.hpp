@@ -17,11 +17,14 @@
 /// liquid mass of the step is unchanged up to round-off. When no point exceeds its mobile
 /// content the limit does nothing (wet runs are bit for bit unchanged).
 
+#include <mpi.h>
+
 #include "argine/core/Types.hpp"
 
 namespace argine {
 
 class MaterialTable;
+class NodalExchange;
 struct MaterialPoints;
 struct PointRates;
 struct PointShapes;
@@ -44,12 +47,30 @@ struct OutflowLimitTotals {
 /// liquid-carrying points with the complete mass balance, before updatePointStates. The
 /// points' volume, porosity, M_L and rho_L must still be those of t^k. Nodal scratch is kept
 /// between calls.
+///
+/// Several ranks (distribute): whether any point is limited is decided over all ranks (one
+/// reduction per step), the nodal deficits and gains are completed at the shared nodes, and
+/// the sums of step 4 are global, so a donor next to a rank border takes its liquid back from
+/// the gaining points on both sides, as on one rank. The totals are then global.
 class LiquidOutflowLimit {
  public:
   OutflowLimitTotals apply(const MaterialTable& table, const MaterialPoints& points,
                            const PointShapes& shapes, PointRates& rates);
+  /// Several ranks: `exchange` completes node sums, `comm` reduces, `nodes` is the mesh's
+  /// node count (every rank keeps arrays of all nodes). Null exchange: one rank.
+  void distribute(NodalExchange* exchange, MPI_Comm comm, int nodes) {
+    exchange_ = exchange;
+    comm_ = comm;
+    nodes_ = nodes;
+  }
 
  private:
+  /// Sums `values` over the ranks (nothing on one rank).
+  void sumOverRanks(Real* values, int count) const;
+
+  NodalExchange* exchange_ = nullptr;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int nodes_ = 0;
   Kokkos::View<Real*, MemSpace> deficit_i_;  ///< sum N excess of the donors (kg)
   Kokkos::View<Real*, MemSpace> gain_i_;     ///< sum N gain of the gaining points (kg)
 };
