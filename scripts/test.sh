@@ -2,7 +2,6 @@
 # Installs, builds and runs argine's tests.
 #   scripts/test.sh               the test suite (everything but the slow labels below)
 #   scripts/test.sh verification  the verification cases (V1, V2, ...) with error norms and plots
-#   scripts/test.sh verification_long  the slow ones (V4 explicit on 0.025 m, ~80 CPU-min)
 #   scripts/test.sh benchmark     the throughput benchmarks
 #   scripts/test.sh paraview      opens the results in ParaView's pvpython (installs ParaView)
 #   scripts/test.sh sanitize      the unit suite built with ASan + UBSan (preset asan-ubsan,
@@ -36,9 +35,6 @@ cd "$build_dir"
 case "$label" in
   suite) ctest --output-on-failure -j "$(nproc)" -LE 'verification|benchmark|paraview' ;;
   benchmark) ctest --verbose -L '^benchmark$' ;;  # verbose: the throughput is the result
-  verification | verification_long | paraview) ctest --output-on-failure -L "^$label\$" ;;
-  *)
-    echo "usage: scripts/test.sh [verification|verification_long|benchmark|paraview|sanitize]" >&2
-    exit 2
-    ;;
+  verification | paraview) ctest --output-on-failure -L "^$label\$" ;;
+  *) echo "usage: scripts/test.sh [verification|benchmark|paraview|sanitize]" >&2; exit 2 ;;
 esac
