@@ -3,6 +3,8 @@
 // (LiquidOutflowLimitTest) and with the donor and the gaining points on different ranks
 // (tests/parallel/OutflowLimitRanksTest).
 
+#include <gtest/gtest.h>
+
 #include "Harness.hpp"
 #include "argine/physics/LiquidOutflowLimit.hpp"
 
@@ -61,5 +63,13 @@ struct LimitScene {
     return out;
   }
 };
+
+/// The totals of the donor case of both tests (masses 15, 100, 100 kg, outflows 4, -5, 0 kg
+/// per point, bottom to top): 4 donors, 6 kg excess, all of it withdrawn.
+inline void expectDonorCaseTotals(const OutflowLimitTotals& totals) {
+  EXPECT_EQ(totals.limited_points, 4);
+  EXPECT_NEAR(totals.excess, 6.0, 1e-12);
+  EXPECT_NEAR(totals.withdrawn, 6.0, 1e-12);
+}
 
 }  // namespace argine::test
