@@ -222,6 +222,14 @@ ListSchema lockingMitigationKeys() {
                               "the same averaging of the liquid pressure increment of "
                               "saturated points")
                   .byDefault(std::string("none")));
+  locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
+                            "alpha: each step a point exchanges liquid with the nodal average of "
+                            "the piezometric pressure p_L + rho_L g y at alpha k/g (capped for "
+                            "stability); removes the Tri3 one-pressure-per-element checkerboard "
+                            "of the saturated zone, conserves the liquid mass (doc/theory.md); "
+                            "0: off (the thesis)")
+                  .atLeast(0)
+                  .byDefault(0.0));
   return locking;
 }
 

@@ -315,6 +315,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
       deckValue(kIncrementAveragingWords, locking.word("Volumetric Strain Averaging"));
   spec.liquid_pressure =
       deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
+  spec.head_stabilisation = locking.real("Liquid Head Stabilisation");
   return spec;
 }
 

@@ -52,12 +52,14 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   evaluatePointShapes(mesh_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
+  head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes());
 }
 
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
   checkMaterialsForExplicitSolver(materials);
   table_ = MaterialTable(materials);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -140,6 +142,7 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   ranks_ = &decomposition;
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
   outflow_limit_.distribute(exchange_.get(), decomposition.comm(), mesh_.numNodes());
   keepOwnedPoints(decomposition, points_);
   rates_.allocate(points_.count);

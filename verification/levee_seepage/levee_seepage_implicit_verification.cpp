@@ -24,8 +24,9 @@
 // P_sections.csv and P_cost.csv).
 // Asserts (VERIFICATION.md V4: agreement within 3 % of the p_L range): the default implicit
 // run vs the reference, and the liquid mass balance (|storage - inflow| <= 1e-10 of the
-// largest of |storage|, |inflow|, or 1e-10 kg/m when both vanish). The explicit comparison is
-// asserted only with --assert-explicit (see doc/verification.md for why it is printed only).
+// largest of |storage|, |inflow|, or 1e-10 kg/m when both vanish). With --assert-explicit also
+// the --explicit run (the V4 deck, with its liquid head stabilisation) within 3 %; --explicit2
+// (the unstabilised deck) and the study's runs are printed only.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -302,7 +303,7 @@ int run(int argc, char** argv) {
          << "," << field("wall_seconds") << "," << field("cpu_seconds") << "," << field("steps")
          << "," << e.p << "," << e.s << "\n";
     profiles[run.name] = fitted;
-    if (options.has("assert-explicit") && !(e.p <= 0.03)) ok = false;
+    if (options.has("assert-explicit") && run.name == "explicit" && !(e.p <= 0.03)) ok = false;
   }
 
   std::ofstream out(output + "/" + tag + "_profiles.csv");

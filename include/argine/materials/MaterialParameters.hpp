@@ -38,6 +38,8 @@ struct SolidSpec {
 struct LockingMitigationSpec {
   IncrementAveraging volumetric_strain = IncrementAveraging::None;  ///< d eps_vol of the solid
   IncrementAveraging liquid_pressure = IncrementAveraging::None;    ///< d p_L (saturated points)
+  /// alpha of the liquid head stabilisation (physics/LiquidHeadStabilisation.hpp); 0: off
+  Real head_stabilisation = 0;
 };
 
 struct LiquidSpec {

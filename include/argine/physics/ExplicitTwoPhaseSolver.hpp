@@ -66,6 +66,7 @@
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
+#include "argine/physics/LiquidHeadStabilisation.hpp"
 #include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
@@ -265,9 +266,10 @@ class ExplicitTwoPhaseSolver {
   Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
-  VolumetricAveraging averaging_;     ///< anti-locking averaging (materials' Locking Mitigation)
-  LiquidOutflowLimit outflow_limit_;  ///< donor limit of the mass balance at dry points
-  int outflow_limited_ = 0;           ///< points it capped in this step
+  VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
+  LiquidHeadStabilisation head_stabilisation_;  ///< against the Tri3 p_L checkerboard
+  LiquidOutflowLimit outflow_limit_;            ///< donor limit of the mass balance at dry points
+  int outflow_limited_ = 0;                     ///< points it capped in this step
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   VelocityBlend velocity_blend_;  ///< PIC shares of the point velocity update (stage keys)

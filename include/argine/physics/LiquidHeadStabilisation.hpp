@@ -1,0 +1,74 @@
+#pragma once
+/// @file LiquidHeadStabilisation.hpp
+/// Stabilisation of the explicit liquid mass balance against the Tri3 pressure checkerboard.
+///
+/// Why. On linear triangles each element carries one liquid pressure (its points share one
+/// flux divergence), and the nodal liquid force sum_p V_p grad N_i p_p cannot see a pattern
+/// that alternates between the "up" and "down" triangles of a structured mesh: the P1-P0
+/// spurious pressure mode. In the saturated zone, where the storage n S_L rho_L / K_L is tiny,
+/// any uneven inflow (a wetting front reaching the water table element by element, a river
+/// rising on a staircase boundary) is stored as such a pattern and nothing removes it: on
+/// V4 neighbouring elements under the riverside slope differ by 11 kPa against a 6 kPa
+/// hydrostatic mean (doc/verification.md V4).
+///
+/// What. A pressure-jump stabilisation in the spirit of Brezzi-Pitkaranta / Silvester-Kechkar
+/// for P1-P0, written as a conservative exchange of liquid mass through the nodes. With the
+/// piezometric pressure phi_p = p_L + rho_L0 g y of each point and its conductance
+///   g_p = min(alpha k_p / g0, share storage_p / dt)   (kg/(Pa s)),
+/// g0 = 9.81 m/s^2 the gravity the conductivity k (m/s) is defined with, and storage_p =
+/// n V rho_L (S_L/K_L - dS_L/ds) the point's dM_L/dp_L, the nodes average
+///   phi_i = sum_p N_i(x_p) g_p phi_p / sum_p N_i(x_p) g_p
+/// and each point's liquid mass changes by
+///   dM_p = -dt g_p (phi_p - sum_i N_i(x_p) phi_i).
+/// Properties:
+///   - sum_p dM_p = 0 (PointValueAveraging.hpp): no liquid is made or lost;
+///   - a hydrostatic state (phi uniform) is left alone, and a point at the centroid of its
+///     triangle sees no exchange in any linear phi field inside the body, since sum_i N_i(x_c)
+///     phi_i = phi(x_c) there: only the curvature of phi and the jumps are acted on;
+///   - the checkerboard is the largest jump field, and it decays with the rate g_p/storage_p;
+///   - the cap share storage_p / dt keeps the exchange stable in the explicit step (a point
+///     moves at most `share` of the way to its nodal average per step). In the saturated zone
+///     the cap is what acts (storage is tiny); in the unsaturated zone alpha k/g0 does, and
+///     there it adds a conductance of order alpha k to the curvature of phi only.
+/// alpha is the material's `Locking Mitigation/Liquid Head Stabilisation` (0: off, the thesis).
+/// The change enters the point mass balance as an extra flux divergence (PointRates), so the
+/// outflow limit and the pressure update see it like any other flux.
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+class ActiveNodes;
+class MaterialTable;
+class NodalExchange;
+struct MaterialPoints;
+struct PointRates;
+struct PointShapes;
+
+class LiquidHeadStabilisation {
+ public:
+  LiquidHeadStabilisation() = default;
+  /// Scratch for a mesh of `nodes` nodes, allocated only when a material of `table` asks for
+  /// the stabilisation. On several MPI ranks, `exchange` completes the nodal sums.
+  LiquidHeadStabilisation(const MaterialTable& table, int nodes, NodalExchange* exchange = nullptr);
+
+  bool active() const { return active_; }
+
+  /// Adds the exchange of the step (file comment) to the flux divergences of `rates`
+  /// (complete mass balance) or to the relative divergences (simplified). `gravity` is the
+  /// stage's (m/s^2, acting in -y).
+  void apply(const MaterialTable& table, const MaterialPoints& points, const PointShapes& shapes,
+             const ActiveNodes& active, PointRates& rates, Real dt, Real gravity);
+
+ private:
+  bool active_ = false;
+  NodalExchange* exchange_ = nullptr;
+  Kokkos::View<Real*, MemSpace> head_point_;         ///< phi_p, then sum_i N_i phi_i
+  Kokkos::View<Real*, MemSpace> own_head_point_;     ///< phi_p
+  Kokkos::View<Real*, MemSpace> conductance_point_;  ///< g_p (kg/(Pa s)); 0: not exchanged
+  Kokkos::View<int*, MemSpace> mode_point_;          ///< kAverageNodal or kAverageNone
+  Kokkos::View<Real* [2], MemSpace> element_sums_;   ///< unused (nodal only); size 0
+  Kokkos::View<Real* [2], MemSpace> node_sums_;      ///< sum N g phi, sum N g per node
+};
+
+}  // namespace argine
