@@ -314,6 +314,10 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
   interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
   // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
   averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
+  // ---- Against the Tri3 pressure checkerboard: a conservative head exchange (no-op unless a
+  // material asks for it; a held p_L takes no flux).
+  if (!momentum_.liquid_with_solid)
+    head_stabilisation_.apply(table_, points_, shapes_, nodes_in_use_, rates_, dt, gravity_);
   // No point gives away more than its mobile liquid (LiquidOutflowLimit.hpp); a no-op
   // unless a point near residual saturation is asked for more.
   outflow_limited_ = outflow_limit_.apply(table_, points_, shapes_, rates_).limited_points;
