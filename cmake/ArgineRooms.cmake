@@ -13,6 +13,10 @@ function(argine_room name)
   if(sources)
     add_library(${target} STATIC ${sources})
     target_link_libraries(${target} PUBLIC ${deps} argine_deps PRIVATE argine_warnings)
+    # sqrt, log, sin, exp without errno (argine never reads it after them): the same values,
+    # but sqrt becomes one instruction without a branch to the library and the compiler may
+    # treat the math functions as pure (hoist, merge repeated calls).
+    target_compile_options(${target} PRIVATE -fno-math-errno)
     target_include_directories(${target} PUBLIC
       $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
       $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>

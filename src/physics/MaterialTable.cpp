@@ -18,6 +18,7 @@ MaterialTable::MaterialTable(const std::vector<MaterialSpec>& materials) {
     material.mass_balance = spec.mass_balance;
     material.solid_density = spec.solid_density;
     material.solid = spec.solid;
+    material.solid_constants = solidConstants(spec.solid);
     material.liquid = spec.liquid;
     material.retention = spec.retention;
     material.conductivity = spec.conductivity;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <stdexcept>
 #include <type_traits>
@@ -142,6 +143,16 @@ Scene makeScene(const std::string& name) {
     return makeBlockScene(name, ElementType::Quad4, 4, 2, PhaseModel::Saturated);
   if (name == "quad4-unsaturated")
     return makeBlockScene(name, ElementType::Quad4, 160, 160, PhaseModel::Unsaturated);
+  if (name == "quad4-mohr-coulomb") {  // the return mapping at every point (not in the list)
+    Scene scene = makeBlockScene(name, ElementType::Quad4, 160, 160, PhaseModel::Saturated);
+    for (auto& material : scene.materials) {
+      material.solid.model = SolidModel::MohrCoulomb;
+      material.solid.cohesion = 5e3;
+      material.solid.friction_angle = 30 * M_PI / 180;
+      material.solid.dilatancy_angle = 0;
+    }
+    return scene;
+  }
   throw std::invalid_argument("unknown scene '" + name + "'");
 }
 

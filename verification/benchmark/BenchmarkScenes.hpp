@@ -13,6 +13,8 @@
 ///   quad4-unsaturated   quad4-saturated with a van Genuchten material (p_ref 10 kPa,
 ///                       lambda 0.5, S_min 0.05) and Mualem HCC at 20 kPa suction: the
 ///                       SWRC, HCC and Newton pressure update at every point
+///   quad4-mohr-coulomb  quad4-saturated with Mohr-Coulomb (c' 5 kPa, phi' 30 deg, psi 0):
+///                       the return mapping at every point (not in the default list)
 ///   quad4-tiny          2 x 2 quads of points in a 4 x 4 mesh (16 points): the fixed cost
 ///                       of a step (not in the default list)
 ///

@@ -37,17 +37,23 @@ KOKKOS_INLINE_FUNCTION Real constrainedModulus(const SolidSpec& spec) {
 }
 
 /// Effective-stress increment of a strain increment: dstress = D dstrain (Pa), with the
-/// tensor shear strain in dstrain[3] (see file comment).
-KOKKOS_INLINE_FUNCTION void elasticStressIncrement(const SolidSpec& spec,
+/// tensor shear strain in dstrain[3] (see file comment); lambda and 2G given (Pa), e.g.
+/// derived once per material (SolidConstants, SolidModel.hpp) instead of at every point.
+KOKKOS_INLINE_FUNCTION void elasticStressIncrement(Real lambda, Real two_g,
                                                    const Real dstrain[kStressComponents],
                                                    Real dstress[kStressComponents]) {
-  const Real lambda = lameLambda(spec);
-  const Real two_g = 2 * shearModulus(spec);
   const Real volumetric = dstrain[0] + dstrain[1] + dstrain[2];
   dstress[0] = lambda * volumetric + two_g * dstrain[0];
   dstress[1] = lambda * volumetric + two_g * dstrain[1];
   dstress[2] = lambda * volumetric + two_g * dstrain[2];
   dstress[3] = two_g * dstrain[3];
+}
+
+/// The same with lambda and 2G of `spec`.
+KOKKOS_INLINE_FUNCTION void elasticStressIncrement(const SolidSpec& spec,
+                                                   const Real dstrain[kStressComponents],
+                                                   Real dstress[kStressComponents]) {
+  elasticStressIncrement(lameLambda(spec), 2 * shearModulus(spec), dstrain, dstress);
 }
 
 }  // namespace argine

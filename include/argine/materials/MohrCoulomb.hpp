@@ -71,6 +71,26 @@ KOKKOS_INLINE_FUNCTION Real mohrCoulombYield(const MohrCoulombStrength& s, const
   return k * sigma[0] - sigma[2] - 2 * s.cohesion * kmath::sqrt(k);
 }
 
+/// What the return mapping derives from a strength: k, m, sigma_c = 2 c sqrt(k) and the apex
+/// sigma_a, each by the expression of the functions above (same values to the bit). A
+/// material whose strength does not depend on suction derives them once (SolidConstants,
+/// SolidModel.hpp) instead of at every point: the sines are most of an elastic point's cost.
+struct MohrCoulombFactors {
+  Real k = 1;                     ///< N_phi = (1 + sin phi)/(1 - sin phi)
+  Real m = 1;                     ///< N_psi = (1 + sin psi)/(1 - sin psi)
+  Real sigma_c = 0;               ///< 2 c sqrt(k) (Pa)
+  Real apex = kmath::infinity();  ///< sigma_a = sigma_c / (k - 1), +infinity for k <= 1 (Pa)
+};
+
+KOKKOS_INLINE_FUNCTION MohrCoulombFactors mohrCoulombFactors(const MohrCoulombStrength& s) {
+  MohrCoulombFactors f;
+  f.k = flowFactor(s.friction_angle);
+  f.m = flowFactor(s.dilatancy_angle);
+  f.sigma_c = 2 * s.cohesion * kmath::sqrt(f.k);
+  f.apex = f.k <= 1 ? kmath::infinity() : f.sigma_c / (f.k - 1);
+  return f;
+}
+
 namespace mc_detail {
 
 /// One plane of the yield surface in principal space: f = a . sigma - r, flow direction b.
@@ -83,10 +103,11 @@ struct Plane {
 /// The planes F1, F2, F3, T1, T2, T3 (file comment) in this order.
 enum PlaneId { kF1 = 0, kF2, kF3, kT1, kT2, kT3, kPlaneCount };
 
-KOKKOS_INLINE_FUNCTION void makePlanes(const MohrCoulombStrength& s, Plane planes[kPlaneCount]) {
-  const Real k = flowFactor(s.friction_angle);
-  const Real m = flowFactor(s.dilatancy_angle);
-  const Real sc = 2 * s.cohesion * kmath::sqrt(k);
+KOKKOS_INLINE_FUNCTION void makePlanes(const MohrCoulombStrength& s, const MohrCoulombFactors& f,
+                                       Plane planes[kPlaneCount]) {
+  const Real k = f.k;
+  const Real m = f.m;
+  const Real sc = f.sigma_c;
   const Plane f1 = {{k, 0, -1}, {m, 0, -1}, sc};
   const Plane f2 = {{0, k, -1}, {0, m, -1}, sc};
   const Plane f3 = {{k, -1, 0}, {m, -1, 0}, sc};
@@ -175,26 +196,29 @@ KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n,
 }  // namespace mc_detail
 
 /// Returns the SORTED principal trial stresses sigma (sigma[0] >= sigma[1] >= sigma[2], Pa)
-/// to the Mohr-Coulomb surface in place (file comment); lambda, G the elastic constants.
-/// Writes the principal plastic strain increment D^-1 (sigma_trial - sigma) to
-/// plastic_strain and returns the region (kMohrCoulombElastic, Surface or Apex).
-KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength, Real lambda,
+/// to the Mohr-Coulomb surface in place (file comment); lambda, G the elastic constants,
+/// `factors` = mohrCoulombFactors(strength). Writes the principal plastic strain increment
+/// D^-1 (sigma_trial - sigma) to plastic_strain and returns the region (kMohrCoulombElastic,
+/// Surface or Apex).
+KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength,
+                                               const MohrCoulombFactors& factors, Real lambda,
                                                Real shear_modulus, Real sigma[3],
                                                Real plastic_strain[3]) {
   using namespace mc_detail;
   for (int c = 0; c < 3; ++c) plastic_strain[c] = 0;
-  const Real apex = mohrCoulombApex(strength);
+  const Real apex = factors.apex;
   // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
   const bool cutoff = strength.tension_cutoff && strength.tensile_strength < apex;
   const Real scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
                      strength.cohesion + (cutoff ? kmath::fabs(strength.tensile_strength) : 0);
   const Real tolerance = 1e-12 * (scale > 0 ? scale : 1);
-  const bool outside = mohrCoulombYield(strength, sigma) > tolerance ||
-                       (cutoff && sigma[0] - strength.tensile_strength > tolerance);
+  const Real yield = factors.k * sigma[0] - sigma[2] - factors.sigma_c;  // mohrCoulombYield
+  const bool outside =
+      yield > tolerance || (cutoff && sigma[0] - strength.tensile_strength > tolerance);
   if (!outside) return kMohrCoulombElastic;
 
   Plane planes[kPlaneCount];
-  makePlanes(strength, planes);
+  makePlanes(strength, factors, planes);
   const Real two_g = 2 * shear_modulus;
   // Active sets in the order of the file comment; -1 ends a set.
   constexpr int kSets = 12;
@@ -228,6 +252,14 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
     sigma[c] = out[c];
   }
   return region;
+}
+
+/// The same, deriving the factors from `strength`.
+KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength, Real lambda,
+                                               Real shear_modulus, Real sigma[3],
+                                               Real plastic_strain[3]) {
+  return returnToMohrCoulomb(strength, mohrCoulombFactors(strength), lambda, shear_modulus, sigma,
+                             plastic_strain);
 }
 
 /// In-plane principal decomposition of (xx, yy, xy): centre c, radius R >= 0 and the unit
@@ -267,14 +299,16 @@ KOKKOS_INLINE_FUNCTION Real equivalentPrincipalDeviatoric(const Real e[3]) {
 /// principal values (in-plane pair and sigma_zz), the return of returnToMohrCoulomb, and back
 /// to xx, yy, zz, xy with the trial's principal directions. `plastic_strain` grows by the
 /// equivalent deviatoric plastic strain sqrt(2/3 e^p:e^p) of the increment. Returns the
-/// region (plastic_state).
-KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(const SolidSpec& spec,
+/// region (plastic_state). lambda, G the elastic constants (Pa), `factors` =
+/// mohrCoulombFactors(strength).
+KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(Real lambda, Real shear_modulus,
                                                    const MohrCoulombStrength& strength,
+                                                   const MohrCoulombFactors& factors,
                                                    const Real dstrain[kStressComponents],
                                                    Real stress[kStressComponents],
                                                    Real& plastic_strain) {
   Real dstress[kStressComponents];
-  elasticStressIncrement(spec, dstrain, dstress);
+  elasticStressIncrement(lambda, 2 * shear_modulus, dstrain, dstress);
   Real trial[kStressComponents];
   for (int i = 0; i < kStressComponents; ++i) trial[i] = stress[i] + dstress[i];
   const InPlanePrincipal in_plane = inPlanePrincipal(trial[0], trial[1], trial[3]);
@@ -292,8 +326,7 @@ KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(const SolidSpec& spec,
     sigma[0] = major, sigma[1] = minor, sigma[2] = zz, z_slot = 2;
   }
   Real plastic[3];
-  const int region =
-      returnToMohrCoulomb(strength, lameLambda(spec), shearModulus(spec), sigma, plastic);
+  const int region = returnToMohrCoulomb(strength, factors, lambda, shear_modulus, sigma, plastic);
   if (region == kMohrCoulombElastic) {
     for (int i = 0; i < kStressComponents; ++i) stress[i] = trial[i];
     return region;
@@ -313,6 +346,16 @@ KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(const SolidSpec& spec,
   stress[3] = radius * in_plane.sin2;
   plastic_strain += equivalentPrincipalDeviatoric(plastic);
   return region;
+}
+
+/// The same with the elastic constants of `spec` and the factors of `strength`.
+KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(const SolidSpec& spec,
+                                                   const MohrCoulombStrength& strength,
+                                                   const Real dstrain[kStressComponents],
+                                                   Real stress[kStressComponents],
+                                                   Real& plastic_strain) {
+  return mohrCoulombStressUpdate(lameLambda(spec), shearModulus(spec), strength,
+                                 mohrCoulombFactors(strength), dstrain, stress, plastic_strain);
 }
 
 }  // namespace argine

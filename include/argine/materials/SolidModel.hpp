@@ -66,33 +66,72 @@ KOKKOS_INLINE_FUNCTION MohrCoulombStrength mohrCoulombStrength(const SolidSpec& 
   return strength;
 }
 
+/// What a material's stress update derives from its SolidSpec alone, derived once per
+/// material (physics/MaterialTable) instead of at every point, by the same expressions (so
+/// the same values to the bit): lambda and G, and for MohrCoulomb, whose strength does not
+/// depend on suction, the strength and its return-mapping factors.
+struct SolidConstants {
+  Real lambda = 0;               ///< Lame's lambda (Pa)
+  Real shear_modulus = 0;        ///< G (Pa)
+  MohrCoulombStrength strength;  ///< MohrCoulomb only: mohrCoulombStrength(spec, 0)
+  MohrCoulombFactors factors;    ///< MohrCoulomb only: mohrCoulombFactors(strength)
+};
+
+KOKKOS_INLINE_FUNCTION SolidConstants solidConstants(const SolidSpec& spec) {
+  SolidConstants constants;
+  constants.lambda = lameLambda(spec);
+  constants.shear_modulus = shearModulus(spec);
+  if (spec.model == SolidModel::MohrCoulomb) {
+    constants.strength = mohrCoulombStrength(spec, 0);
+    constants.factors = mohrCoulombFactors(constants.strength);
+  }
+  return constants;
+}
+
 /// Update the Bishop effective stress (Pa, tension positive; xx, yy, zz, xy) of one point
 /// by the strain increment dstrain (tensor shear in [3], see LinearElastic.hpp). `suction`
-/// (Pa, s = -p_L) feeds the suction-dependent model. Sets plastic_state (0 elastic, 1
-/// plastic on a plane/edge/cut-off, 2 apex) and adds the equivalent plastic strain of the
-/// increment to plastic_strain. Returns false (NaN stress, kPlasticStateUnsupported) only
-/// for a model without an update.
-KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec, Real suction,
+/// (Pa, s = -p_L) feeds the suction-dependent model; `constants` = solidConstants(spec).
+/// Sets plastic_state (0 elastic, 1 plastic on a plane/edge/cut-off, 2 apex) and adds the
+/// equivalent plastic strain of the increment to plastic_strain. Returns false (NaN stress,
+/// kPlasticStateUnsupported) only for a model without an update.
+KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec,
+                                                  const SolidConstants& constants, Real suction,
                                                   const Real dstrain[kStressComponents],
                                                   Real stress[kStressComponents],
                                                   Real& plastic_strain, int& plastic_state) {
   switch (spec.model) {
     case SolidModel::LinearElastic: {
       Real dstress[kStressComponents];
-      elasticStressIncrement(spec, dstrain, dstress);
+      elasticStressIncrement(constants.lambda, 2 * constants.shear_modulus, dstrain, dstress);
       for (int i = 0; i < kStressComponents; ++i) stress[i] += dstress[i];
       plastic_state = kPlasticStateElastic;
       return true;
     }
     case SolidModel::MohrCoulomb:
-    case SolidModel::SuctionMohrCoulomb:
-      plastic_state = mohrCoulombStressUpdate(spec, mohrCoulombStrength(spec, suction), dstrain,
-                                              stress, plastic_strain);
+      plastic_state =
+          mohrCoulombStressUpdate(constants.lambda, constants.shear_modulus, constants.strength,
+                                  constants.factors, dstrain, stress, plastic_strain);
       return true;
+    case SolidModel::SuctionMohrCoulomb: {
+      const MohrCoulombStrength strength = mohrCoulombStrength(spec, suction);
+      plastic_state =
+          mohrCoulombStressUpdate(constants.lambda, constants.shear_modulus, strength,
+                                  mohrCoulombFactors(strength), dstrain, stress, plastic_strain);
+      return true;
+    }
   }
   for (int i = 0; i < kStressComponents; ++i) stress[i] = kmath::quietNaN();
   plastic_state = kPlasticStateUnsupported;
   return false;
+}
+
+/// The same, deriving the constants from `spec`.
+KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec, Real suction,
+                                                  const Real dstrain[kStressComponents],
+                                                  Real stress[kStressComponents],
+                                                  Real& plastic_strain, int& plastic_state) {
+  return updateEffectiveStress(spec, solidConstants(spec), suction, dstrain, stress, plastic_strain,
+                               plastic_state);
 }
 
 }  // namespace argine

@@ -7,6 +7,7 @@
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/MaterialParameters.hpp"
+#include "argine/materials/SolidModel.hpp"
 
 namespace argine {
 
@@ -18,11 +19,12 @@ struct PointMaterial {
   MassBalanceForm mass_balance = MassBalanceForm::Complete;  ///< Eq. 4.12 or 4.14
   Real solid_density = 2650;                                 ///< rho_S (kg/m^3)
   SolidSpec solid;                                           ///< skeleton model
-  LiquidSpec liquid;                                         ///< rho_L0, K_L, mu_L
-  RetentionSpec retention;                                   ///< SWRC (unsaturated only)
-  ConductivitySpec conductivity;                             ///< HCC (k_sat filled)
-  Real constrained_modulus = 0;   ///< E_c = constrainedModulus(solid) (Pa), once per material
-  LockingMitigationSpec locking;  ///< anti-locking averaging (VolumetricAveraging.hpp)
+  SolidConstants solid_constants;  ///< solidConstants(solid), once per material
+  LiquidSpec liquid;               ///< rho_L0, K_L, mu_L
+  RetentionSpec retention;         ///< SWRC (unsaturated only)
+  ConductivitySpec conductivity;   ///< HCC (k_sat filled)
+  Real constrained_modulus = 0;    ///< E_c = constrainedModulus(solid) (Pa), once per material
+  LockingMitigationSpec locking;   ///< anti-locking averaging (VolumetricAveraging.hpp)
 };
 
 /// Whether points of this phase model carry liquid (mass, pressure, velocity).

@@ -102,7 +102,8 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
   rotateStressBySpin(v.rates.spin_increment_p(p), stress);
   Real plastic_strain = v.points.plastic_strain(p);
   int plastic_state = v.points.plastic_state(p);
-  updateEffectiveStress(material.solid, suction, dstrain, stress, plastic_strain, plastic_state);
+  updateEffectiveStress(material.solid, material.solid_constants, suction, dstrain, stress,
+                        plastic_strain, plastic_state);
   for (int c = 0; c < kStressComponents; ++c) {
     v.points.stress_effective(p, c) = stress[c];
     v.points.strain(p, c) = strain[c];
