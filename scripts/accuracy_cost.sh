@@ -55,16 +55,24 @@ if [[ " $cases " == *" v4 "* ]]; then
   # 1e2 ~30 min), the implicit study with its refined reference (~4 min) among them.
   implicit="$v4/levee_seepage_implicit_verification --study --output $work --tag v4_implicit"
   prefixes=()
-  for run in 0.025:1000 implicit 0.025:10000 0.05:100 0.05:1000 0.05:10000 0.1:1000 0.1:10000; do
+  # The explicit runs use the V4 deck (with its liquid head stabilisation); "u" runs the
+  # thesis' scheme without it (levee_seepage_unstabilised.yaml) for comparison.
+  unstabilised="--deck $root/verification/levee_seepage/levee_seepage_unstabilised.yaml"
+  for run in 0.025:1000 implicit 0.025:10000 0.05:100 0.05:1000 0.05:10000 u0.05:10000 \
+    0.1:1000 0.1:10000; do
     if [ "$run" = implicit ]; then
       echo "$implicit >$work/v4_implicit.log 2>&1 || true" >>"$work/v4_jobs"
       continue
     fi
+    deck="" kind=explicit
+    if [ "${run:0:1}" = u ]; then
+      run=${run:1} deck=$unstabilised kind=unstabilised
+    fi
     h=${run%%:*} ms=${run##*:}
-    tag=v4_explicit_h${h}_ms${ms}
+    tag=v4_${kind}_h${h}_ms${ms}
     prefixes+=("$work/$tag")
     echo "$v4/levee_seepage_verification --output $work --tag $tag --element-size $h" \
-      "--mass-scaling $ms >$work/$tag.log 2>&1 || true" >>"$work/v4_jobs"
+      "--mass-scaling $ms $deck >$work/$tag.log 2>&1 || true" >>"$work/v4_jobs"
   done
   run_pairs "$work/v4_jobs"
   # Compare every explicit run with the reference the implicit study computed.

@@ -93,16 +93,26 @@ def plot(results, figures):
                                   [100 * float(r[f"{key}_error"]) for r in sel], marker,
                                   color=colours[size], ls="none",
                                   label=f"implicit h {size} m, theta {theta}")
-            explicit = [r for r in rows if r["path"] == "explicit"]
+            # V4: runs named *unstabilised* use the thesis' scheme (no liquid head
+            # stabilisation); the others the V4 deck's.
+            every_explicit = [r for r in rows if r["path"] == "explicit"]
+            plain = [r for r in every_explicit if "unstabilised" in r["run"]]
+            explicit = [r for r in every_explicit if "unstabilised" not in r["run"]]
             means = [r for r in explicit if r.get("p_error_means")]
             ax.loglog([float(r["cpu_seconds"]) for r in explicit],
                       [100 * float(r[f"{key}_error"]) for r in explicit], "s", color="tab:red",
-                      ls="none", label="explicit (point values)" if means else "explicit")
+                      ls="none", label="explicit (point values)" if means else
+                      "explicit" if not plain else "explicit, head stabilisation 0.1")
+            if plain:
+                ax.loglog([float(r["cpu_seconds"]) for r in plain],
+                          [100 * float(r[f"{key}_error"]) for r in plain], "x",
+                          color="tab:orange", ls="none",
+                          label="explicit, thesis scheme (unstabilised)")
             if means:
                 ax.loglog([float(r["cpu_seconds"]) for r in means],
                           [100 * float(r[f"{key}_error_means"]) for r in means], "s",
                           mfc="none", color="tab:red", label="explicit (element means)")
-            for r in explicit:
+            for r in explicit + plain:
                 ax.annotate(f"h {r['element_size']}, ms {float(r['mass_scaling']):.0e}",
                             (float(r["cpu_seconds"]), 100 * float(r[f"{key}_error"])),
                             fontsize=6, xytext=(3, 2), textcoords="offset points")
