@@ -34,13 +34,20 @@ fig.savefig(os.path.join(args.figures, "levee_seepage_error_vs_time.png"), dpi=1
 
 profiles = list(csv.DictReader(open(os.path.join(args.csv, "levee_seepage_implicit_profiles.csv"))))
 fig, axes = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+# One colour per run, one line style per time; --explicit2 is the unstabilised deck.
+styles = {"reference": ("black", "reference"), "implicit": ("tab:blue", "implicit h 0.05"),
+          "explicit": ("tab:red", "explicit, head stabilisation 0.1"),
+          "explicit2": ("tab:orange", "explicit, thesis scheme (unstabilised)")}
+dashes = {"72": "-", "160": "--", "300": ":"}
 for ax, section in zip(axes, ["S1", "S2"]):
-    for run in sorted({r["run"] for r in profiles}):
+    for run in [r for r in styles if any(p["run"] == r for p in profiles)]:
+        colour, name = styles[run]
         for time in ["72", "160", "300"]:
             rows = [r for r in profiles if r["run"] == run and r["section"] == section
                     and r["time"] == time and r["pressure"] != "nan"]
             ax.plot([float(r["pressure"]) for r in rows], [float(r["y"]) for r in rows],
-                    lw=0.8, label=f"{run} {time} s")
+                    lw=1.6 if run == "reference" else 0.9, color=colour, ls=dashes[time],
+                    label=f"{name}, {time} s")
     ax.set_title(section)
     ax.set_xlabel("p_L (Pa)")
 axes[0].set_ylabel("y (m)")
