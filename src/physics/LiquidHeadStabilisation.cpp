@@ -15,6 +15,12 @@ constexpr Real kConductivityGravity = 9.81;
 /// At most this share of the way to the nodal average per step (stability of the exchange).
 constexpr Real kStableShare = 0.25;
 
+/// phi = p_L + rho_L0 g y (Pa), gravity acting in -y.
+KOKKOS_INLINE_FUNCTION Real piezometricPressure(const PointMaterial& material, Real pressure,
+                                                Real y, Real gravity) {
+  return pressure + material.liquid.density * gravity * y;
+}
+
 }  // namespace
 
 LiquidHeadStabilisation::LiquidHeadStabilisation(const MaterialTable& table, int nodes,
@@ -35,14 +41,12 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
   const int count = points.count;
   if (static_cast<int>(head_point_.extent(0)) != count) {
     head_point_ = Kokkos::View<Real*, MemSpace>("head_stabilisation_head", count);
-    own_head_point_ = Kokkos::View<Real*, MemSpace>("head_stabilisation_own_head", count);
     conductance_point_ = Kokkos::View<Real*, MemSpace>("head_stabilisation_conductance", count);
     mode_point_ = Kokkos::View<int*, MemSpace>("head_stabilisation_mode", count);
   }
   const auto materials_m = table.materials();
   const MaterialPoints pts = points;
   const auto head_p = head_point_;
-  const auto own_p = own_head_point_;
   const auto conductance_p = conductance_point_;
   const auto mode_p = mode_point_;
   Kokkos::parallel_for(
@@ -52,7 +56,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         const Real alpha = material.locking.head_stabilisation;
         mode_p(p) = kAverageNone;
         conductance_p(p) = 0;
-        head_p(p) = own_p(p) = 0;
+        head_p(p) = 0;
         if (!carriesLiquid(material.phase) || alpha <= 0 || pts.element(p) < 0) return;
         const Real pressure = pts.pressure_liquid(p);
         const Real ds_ds =
@@ -67,8 +71,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         if (!(conductance > 0)) return;
         mode_p(p) = kAverageNodal;
         conductance_p(p) = conductance;
-        const Real head = pressure + material.liquid.density * gravity * pts.position(p, 1);
-        head_p(p) = own_p(p) = head;
+        head_p(p) = piezometricPressure(material, pressure, pts.position(p, 1), gravity);
       });
   averagePointValues(points, shapes, active, mode_point_, conductance_point_, head_point_,
                      element_sums_, node_sums_, exchange_);
@@ -80,7 +83,11 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
       KOKKOS_LAMBDA(const int p) {
         if (mode_p(p) == kAverageNone) return;
         const PointMaterial& material = materials_m(pts.material(p));
-        const Real mass_change = -dt * conductance_p(p) * (own_p(p) - head_p(p));  // kg
+        // The point's own phi (its p_L and position are unchanged since the first kernel)
+        // against the nodal average now in head_p.
+        const Real own =
+            piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
+        const Real mass_change = -dt * conductance_p(p) * (own - head_p(p));  // kg
         if (material.mass_balance == MassBalanceForm::Complete) {
           // M_L^{k+1} = M_L^k - V^k dt div(c w) (LiquidState.hpp): V^k from V^{k+1}.
           const Real volumetric =

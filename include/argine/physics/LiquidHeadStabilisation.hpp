@@ -63,8 +63,7 @@ class LiquidHeadStabilisation {
  private:
   bool active_ = false;
   NodalExchange* exchange_ = nullptr;
-  Kokkos::View<Real*, MemSpace> head_point_;         ///< phi_p, then sum_i N_i phi_i
-  Kokkos::View<Real*, MemSpace> own_head_point_;     ///< phi_p
+  Kokkos::View<Real*, MemSpace> head_point_;         ///< phi_p, then sum_i N_i(x_p) phi_i
   Kokkos::View<Real*, MemSpace> conductance_point_;  ///< g_p (kg/(Pa s)); 0: not exchanged
   Kokkos::View<int*, MemSpace> mode_point_;          ///< kAverageNodal or kAverageNone
   Kokkos::View<Real* [2], MemSpace> element_sums_;   ///< unused (nodal only); size 0
