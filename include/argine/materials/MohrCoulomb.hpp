@@ -268,23 +268,29 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
 struct InPlanePrincipal {
   Real centre;
   Real radius;
-  Real cos2;
-  Real sin2;
+  Real half_difference;  ///< (xx - yy) / 2
+  Real shear;            ///< xy
+
+  /// cos 2 theta, sin 2 theta: two divisions, so only asked for where a return rotates the
+  /// principal values back (an elastic point keeps its trial stress).
+  KOKKOS_INLINE_FUNCTION void direction(Real& cos2, Real& sin2) const {
+    const Real tiny = 1e-300;
+    if (radius > tiny) {
+      cos2 = half_difference / radius;
+      sin2 = shear / radius;
+    } else {
+      cos2 = 1;
+      sin2 = 0;
+    }
+  }
 };
 
 KOKKOS_INLINE_FUNCTION InPlanePrincipal inPlanePrincipal(Real xx, Real yy, Real xy) {
   InPlanePrincipal p;
   p.centre = (xx + yy) / 2;
-  const Real half = (xx - yy) / 2;
-  p.radius = kmath::sqrt(half * half + xy * xy);
-  const Real tiny = 1e-300;
-  if (p.radius > tiny) {
-    p.cos2 = half / p.radius;
-    p.sin2 = xy / p.radius;
-  } else {
-    p.cos2 = 1;
-    p.sin2 = 0;
-  }
+  p.half_difference = (xx - yy) / 2;
+  p.shear = xy;
+  p.radius = kmath::sqrt(p.half_difference * p.half_difference + xy * xy);
   return p;
 }
 
@@ -340,10 +346,12 @@ KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(Real lambda, Real shear_modul
     new_major = sigma[0], new_minor = sigma[1], new_zz = sigma[2];
   }
   const Real centre = (new_major + new_minor) / 2, radius = (new_major - new_minor) / 2;
-  stress[0] = centre + radius * in_plane.cos2;
-  stress[1] = centre - radius * in_plane.cos2;
+  Real cos2, sin2;
+  in_plane.direction(cos2, sin2);
+  stress[0] = centre + radius * cos2;
+  stress[1] = centre - radius * cos2;
   stress[2] = new_zz;
-  stress[3] = radius * in_plane.sin2;
+  stress[3] = radius * sin2;
   plastic_strain += equivalentPrincipalDeviatoric(plastic);
   return region;
 }
