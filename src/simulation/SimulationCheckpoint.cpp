@@ -82,7 +82,11 @@ void Simulation::restoreFromCheckpoint() {
   if (changed) solver_->setMaterials(deck_.materials);
   // Inside a stage: its settings, boundary conditions and time-step control from the deck;
   // what beginStage does to the points is overwritten by the checkpoint's points next.
-  if (s.mid_stage) solver_->beginStage(deck_.stages[s.stage_index]);
+  // The stage's time tables count from its start: begin it at that time, as the run did.
+  if (s.mid_stage) {
+    solver_->setTime(s.stage_start);
+    solver_->beginStage(deck_.stages[s.stage_index]);
+  }
   points_ = s.points;  // same count; the solver refers to points_, so it sees them
   ExplicitTwoPhaseSolver::ResumeState solver_state = s.solver;
   solver_state.stage_started = s.mid_stage;
