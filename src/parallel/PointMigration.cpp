@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "argine/parallel/RankDecomposition.hpp"
@@ -159,18 +160,23 @@ void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& poi
   points = rebuildPoints(points, kept, {}, migratedValuesPerPoint(points));
 }
 
-MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks) {
+namespace {
+
+/// Every rank's points packed (packPoint), rank after rank, on rank 0 or on every rank when
+/// `to_all_ranks` (empty elsewhere); `sizes[r]` = values of rank r (on the receiving ranks).
+std::vector<Real> gatherPacked(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks,
+                               std::vector<int>& sizes) {
   static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
                 "the gather packs on the host");
-  int ranks = 1, me = 0;
+  int ranks = 1;
   MPI_Comm_size(comm, &ranks);
-  MPI_Comm_rank(comm, &me);
   const int values = migratedValuesPerPoint(points);
   std::vector<Real> mine(static_cast<std::size_t>(points.count) * values);
   for (int p = 0; p < points.count; ++p)
     packPoint(points, p, &mine[static_cast<std::size_t>(p) * values]);
   const int size = static_cast<int>(mine.size());
-  std::vector<int> sizes(ranks, 0), offsets(ranks + 1, 0);
+  sizes.assign(ranks, 0);
+  std::vector<int> offsets(ranks + 1, 0);
   if (to_all_ranks)
     MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
   else
@@ -183,13 +189,24 @@ MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to
   else
     MPI_Gatherv(mine.data(), size, MPI_DOUBLE, all.data(), sizes.data(), offsets.data(), MPI_DOUBLE,
                 0, comm);
+  return all;
+}
+
+}  // namespace
+
+MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks) {
+  int me = 0;
+  MPI_Comm_rank(comm, &me);
+  std::vector<int> sizes;
+  const std::vector<Real> all = gatherPacked(comm, points, to_all_ranks, sizes);
   MaterialPoints gathered;
   if (!to_all_ranks && me != 0) {
     gathered.allocate(0);
     return gathered;
   }
   // The id is a field of the packed point: find its slot from a point packed with known ids.
-  const int count = offsets[ranks] / values;
+  const int values = migratedValuesPerPoint(points);
+  const int count = static_cast<int>(all.size() / values);
   std::vector<Real> id_of(count);
   {
     int slot = 0, id_slot = -1;
@@ -206,6 +223,37 @@ MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to
   for (int k = 0; k < count; ++k)
     unpackPoint(&all[static_cast<std::size_t>(order[k]) * values], gathered, k);
   return gathered;
+}
+
+MaterialPoints gatherPointsByRank(MPI_Comm comm, const MaterialPoints& points,
+                                  std::vector<long long>& counts) {
+  int me = 0;
+  MPI_Comm_rank(comm, &me);
+  std::vector<int> sizes;
+  const std::vector<Real> all = gatherPacked(comm, points, false, sizes);
+  MaterialPoints gathered;
+  counts.clear();
+  if (me != 0) {
+    gathered.allocate(0);
+    return gathered;
+  }
+  const int values = migratedValuesPerPoint(points);
+  for (const int size : sizes) counts.push_back(size / values);
+  const int count = static_cast<int>(all.size() / values);
+  gathered.allocate(count);
+  for (int k = 0; k < count; ++k)
+    unpackPoint(&all[static_cast<std::size_t>(k) * values], gathered, k);
+  return gathered;
+}
+
+MaterialPoints pointRange(const MaterialPoints& points, int first, int count) {
+  if (first < 0 || count < 0 || first + count > points.count)
+    throw std::out_of_range("pointRange: [" + std::to_string(first) + ", " +
+                            std::to_string(first + count) + ") of " + std::to_string(points.count) +
+                            " points");
+  std::vector<int> kept(count);
+  std::iota(kept.begin(), kept.end(), first);
+  return rebuildPoints(points, kept, {}, migratedValuesPerPoint(points));
 }
 
 }  // namespace argine

@@ -98,6 +98,9 @@ std::uintmax_t writeCheckpoint(const std::string& path, std::uint64_t deck_hash,
   out.put<std::uint64_t>(s.stage_log.size());
   for (const auto& line : s.stage_log) out.putString(line);
   putSolver(out, s.solver);
+  out.put<std::uint64_t>(s.other_rank_solvers.size());
+  for (const auto& solver : s.other_rank_solvers) putSolver(out, solver);
+  out.putVector(s.rank_point_counts);
   out.put<std::uint8_t>(s.has_relaxation);
   out.put<Real>(s.relaxation.start);
   out.put<Real>(s.relaxation.peak);
@@ -140,6 +143,13 @@ void readCheckpoint(const std::string& path, std::uint64_t deck_hash, Checkpoint
   s.stage_log.clear();
   for (std::uint64_t k = 0; k < lines; ++k) s.stage_log.push_back(in.getString());
   s.solver = getSolver(in);
+  const auto other_ranks = in.get<std::uint64_t>();
+  s.other_rank_solvers.clear();
+  for (std::uint64_t r = 0; r < other_ranks; ++r) s.other_rank_solvers.push_back(getSolver(in));
+  s.rank_point_counts = in.getVector<std::int64_t>();
+  if (s.rank_point_counts.size() != other_ranks + 1)
+    in.fail("point counts of " + std::to_string(s.rank_point_counts.size()) + " ranks for " +
+            std::to_string(other_ranks + 1) + " ranks' solver states");
   s.has_relaxation = in.get<std::uint8_t>() != 0;
   s.relaxation.start = in.get<Real>();
   s.relaxation.peak = in.get<Real>();

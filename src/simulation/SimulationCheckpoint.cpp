@@ -1,18 +1,23 @@
 // Checkpoints and restart of a run (issue P8, doc/checkpoints.md): what the Simulation
 // writes, and how `argine run DECK --restart FILE` picks the run up so that it continues bit
-// for bit and its files end up as those of an uninterrupted run. One rank only.
+// for bit and its files end up as those of an uninterrupted run, on one MPI rank or on as
+// many as the checkpointed run had (each rank gets back its own points in their order).
 #include <mpi.h>
 
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <type_traits>
+#include <vector>
 
 #include "argine/checkpoint/CheckpointFile.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckWords.hpp"
 #include "argine/output/CsvWriter.hpp"
 #include "argine/output/ResultsWriter.hpp"
+#include "argine/parallel/PointMigration.hpp"
+#include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/probes/ProbeWriter.hpp"
 #include "argine/simulation/Checkpoint.hpp"
@@ -33,20 +38,19 @@ double steadySeconds() {
 void Simulation::readRestartCheckpoint() {
   const bool restart = !options_.restart.empty();
   if (!restart && !deck_.output.checkpoint.enabled()) return;
-  // One rank: every rank would write the same file (and a decomposed run would need them all).
-  int initialised = 0, ranks = 1;
-  MPI_Initialized(&initialised);
-  if (initialised) MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  if (ranks > 1)
-    throw InputError(
-        restart ? options_.restart : "Output/Checkpoint",
-        "checkpoints and restart run on one MPI rank only; this run has " + std::to_string(ranks));
   deck_hash_ = deck_.path.empty() ? 0 : fileHash(deck_.path);
   if (!restart) return;
   const std::string& path = options_.restart;
   auto state = std::make_unique<CheckpointState>();
-  state->points.allocate(points_.count);
+  // Every rank reads the whole file: the points of all ranks (as many as the deck seeds).
+  state->points.allocate(static_cast<int>(totalPoints()));
   readCheckpoint(path, deck_hash_, *state);
+  const int ranks = distributed() ? ranks_->size() : 1;
+  if (state->rank_point_counts.size() != static_cast<std::size_t>(ranks))
+    throw InputError(path, "checkpoint of a run on " +
+                               std::to_string(state->rank_point_counts.size()) +
+                               " MPI rank(s); this run has " + std::to_string(ranks) +
+                               ": restart it on as many ranks");
   if (state->mesh_nodes != mesh_.numNodes() || state->mesh_elements != mesh_.numElements())
     throw InputError(
         path, "checkpoint of a mesh of " + std::to_string(state->mesh_nodes) + " nodes and " +
@@ -87,8 +91,19 @@ void Simulation::restoreFromCheckpoint() {
     solver_->setTime(s.stage_start);
     solver_->beginStage(deck_.stages[s.stage_index]);
   }
-  points_ = s.points;  // same count; the solver refers to points_, so it sees them
-  ExplicitTwoPhaseSolver::ResumeState solver_state = s.solver;
+  // This rank's points, in the order the checkpointed rank held them (the order of its
+  // sums); the solver refers to points_, so it sees them.
+  const int rank = distributed() ? ranks_->rank() : 0;
+  if (distributed()) {
+    std::int64_t first = 0;
+    for (int r = 0; r < rank; ++r) first += s.rank_point_counts[r];
+    points_ =
+        pointRange(s.points, static_cast<int>(first), static_cast<int>(s.rank_point_counts[rank]));
+  } else {
+    points_ = s.points;
+  }
+  ExplicitTwoPhaseSolver::ResumeState solver_state =
+      rank == 0 ? s.solver : s.other_rank_solvers[rank - 1];
   solver_state.stage_started = s.mid_stage;
   solver_->resume(solver_state);
 
@@ -153,8 +168,13 @@ void Simulation::writeCheckpointIfDue(bool mid_stage) {
   // restarted run as in the uninterrupted one).
   const bool steps_due =
       spec.every_steps > 0 && summary_.steps / spec.every_steps > checkpoint_step_mark_;
-  const bool wall_due =
+  bool wall_due =
       spec.wall_interval > 0 && steadySeconds() - last_checkpoint_wall_ >= spec.wall_interval;
+  if (distributed() && spec.wall_interval > 0) {  // rank 0's clock decides for all ranks
+    int due = wall_due ? 1 : 0;
+    MPI_Bcast(&due, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    wall_due = due != 0;
+  }
   if (steps_due || wall_due) writeCheckpointNow(mid_stage);
 }
 
@@ -177,6 +197,27 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
   s.stage_log = stage_log_;
   s.solver = solver_->resumeState();
   s.solver.stage_started = mid_stage;
+  if (distributed()) {
+    // Collective: rank 0 collects every rank's solver state and points (rank after rank, each
+    // in its memory order) and writes the one file.
+    static_assert(std::is_trivially_copyable_v<ExplicitTwoPhaseSolver::ResumeState>,
+                  "the solver states travel as bytes");
+    const int ranks = ranks_->size();
+    std::vector<ExplicitTwoPhaseSolver::ResumeState> all(writes() ? ranks : 0);
+    MPI_Gather(&s.solver, sizeof s.solver, MPI_BYTE, all.data(), sizeof s.solver, MPI_BYTE, 0,
+               MPI_COMM_WORLD);
+    std::vector<long long> counts;
+    s.points = gatherPointsByRank(MPI_COMM_WORLD, points_, counts);
+    if (!writes()) {
+      finishCheckpoint(begin, 0);
+      return;
+    }
+    s.other_rank_solvers.assign(all.begin() + 1, all.end());
+    s.rank_point_counts.assign(counts.begin(), counts.end());
+  } else {
+    s.points = points_;  // shares the Views: written as they are now
+    s.rank_point_counts = {points_.count};
+  }
   if (mid_stage && relaxation_) {
     s.has_relaxation = true;
     s.relaxation = relaxation_->state();
@@ -188,10 +229,14 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
     for (const auto bytes : probes_->fileBytes()) s.probe_bytes.push_back(bytes);
   s.mesh_nodes = mesh_.numNodes();
   s.mesh_elements = mesh_.numElements();
-  s.points = points_;  // shares the Views: written as they are now
-  summary_.checkpoint_bytes =
-      writeCheckpoint(checkpointPath(options_.output_directory, deck_.output.name), deck_hash_, s);
+  finishCheckpoint(
+      begin,
+      writeCheckpoint(checkpointPath(options_.output_directory, deck_.output.name), deck_hash_, s));
+}
+
+void Simulation::finishCheckpoint(double begin, std::uintmax_t bytes) {
   const double end = steadySeconds();
+  summary_.checkpoint_bytes = bytes;
   summary_.checkpoints += 1;
   summary_.checkpoint_seconds += end - begin;
   last_checkpoint_wall_ = end;

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <stdexcept>
+#include <vector>
+
 #include "../transfer/TestScenes.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/parallel/PointMigration.hpp"
@@ -108,6 +111,62 @@ TEST(PointMigration, PointsGoToTheOwnerOfTheirElementWithAllFields) {
     EXPECT_EQ(points.stress_effective(p, XY), -0.5 * points.id(p));
     EXPECT_EQ(points.plastic_state(p), points.id(p) % 3);
   }
+}
+
+TEST(PointMigration, GatherByRankAndRangeGiveEachRankItsPointsBackInOrder) {
+  // What a checkpoint of a decomposed run stores (gatherPointsByRank on rank 0) and what a
+  // restart hands each rank (pointRange of its slice): the same points in the same order.
+  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  MaterialPoints points = test::seedUniform(mesh);
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  keepOwnedPoints(ranks, points);
+  // A rank's memory order that is not the id order (as after a migration).
+  std::vector<int> reversed(points.count);
+  for (int p = 0; p < points.count; ++p) reversed[p] = points.count - 1 - p;
+  MaterialPoints mine;
+  mine.allocate(points.count);
+  for (int p = 0; p < points.count; ++p) {
+    mine.id(p) = points.id(reversed[p]);
+    mine.element(p) = points.element(reversed[p]);
+    mine.pressure_liquid(p) = 1000.0 + mine.id(p);
+    mine.stress_effective(p, XY) = -0.5 * mine.id(p);
+  }
+  std::vector<long long> counts;
+  const MaterialPoints stored = gatherPointsByRank(MPI_COMM_WORLD, mine, counts);
+  // Every rank reads the stored points (here: broadcast from rank 0) and takes its slice.
+  long long total = stored.count;
+  MPI_Bcast(&total, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  counts.resize(worldSize());
+  MPI_Bcast(counts.data(), worldSize(), MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  std::vector<int> ids(total);
+  std::vector<Real> pressures(total);
+  for (int p = 0; p < stored.count; ++p) {
+    ids[p] = stored.id(p);
+    pressures[p] = stored.pressure_liquid(p);
+  }
+  MPI_Bcast(ids.data(), static_cast<int>(total), MPI_INT, 0, MPI_COMM_WORLD);
+  MPI_Bcast(pressures.data(), static_cast<int>(total), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MaterialPoints everything;
+  everything.allocate(static_cast<int>(total));
+  for (int p = 0; p < total; ++p) {
+    everything.id(p) = ids[p];
+    everything.pressure_liquid(p) = pressures[p];
+  }
+  long long first = 0;
+  for (int r = 0; r < ranks.rank(); ++r) first += counts[r];
+  ASSERT_EQ(counts[ranks.rank()], mine.count);
+  const MaterialPoints back =
+      pointRange(everything, static_cast<int>(first), static_cast<int>(counts[ranks.rank()]));
+  ASSERT_EQ(back.count, mine.count);
+  for (int p = 0; p < mine.count; ++p) {
+    EXPECT_EQ(back.id(p), mine.id(p)) << p;
+    EXPECT_EQ(back.pressure_liquid(p), mine.pressure_liquid(p)) << p;
+  }
+  if (ranks.rank() == 0) {  // the stored copy carries every field, not only the two sent here
+    for (int p = 0; p < stored.count; ++p)
+      EXPECT_EQ(stored.stress_effective(p, XY), -0.5 * stored.id(p)) << p;
+  }
+  EXPECT_THROW(pointRange(everything, static_cast<int>(total), 1), std::out_of_range);
 }
 
 }  // namespace

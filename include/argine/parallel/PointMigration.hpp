@@ -48,5 +48,13 @@ void keepOwnedPoints(const RankDecomposition& decomposition, MaterialPoints& poi
 /// set elsewhere. For output (rank 0 writes the files) and for handing the points to a
 /// stage that keeps them replicated (the implicit seepage solver). Collective over `comm`.
 MaterialPoints gatherPoints(MPI_Comm comm, const MaterialPoints& points, bool to_all_ranks);
+/// The points of all ranks of `comm` on rank 0, rank after rank and each rank's in its own
+/// memory order, with the number each rank holds in `counts` (on rank 0; empty elsewhere):
+/// what a checkpoint of a decomposed run stores, so that every rank gets back its points in
+/// the order of its sums (pointRange). Collective over `comm`.
+MaterialPoints gatherPointsByRank(MPI_Comm comm, const MaterialPoints& points,
+                                  std::vector<long long>& counts);
+/// Points [first, first + count) of `points`, in order, as a new set. Local.
+MaterialPoints pointRange(const MaterialPoints& points, int first, int count);
 
 }  // namespace argine

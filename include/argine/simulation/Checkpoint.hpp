@@ -43,7 +43,10 @@ struct CheckpointState {
   // ---- consistency with the deck
   std::int64_t mesh_nodes = 0;
   std::int64_t mesh_elements = 0;
-  // ---- the material points, every field, in their current order
+  // ---- a run decomposed over MPI ranks (P7): `solver` is rank 0's state
+  std::vector<ExplicitTwoPhaseSolver::ResumeState> other_rank_solvers;  ///< ranks 1, 2, ...
+  std::vector<std::int64_t> rank_point_counts;  ///< points of each rank; one entry: one rank
+  // ---- the material points, every field: rank 0's in their current order, then rank 1's...
   MaterialPoints points;
 };
 

@@ -136,6 +136,8 @@ class Simulation {
   void checkpointIfDue(bool mid_stage);             ///< after a step / at a stage's end
   void writeCheckpointIfDue(bool mid_stage);
   void writeCheckpointNow(bool mid_stage);
+  /// The bookkeeping after a checkpoint (`bytes` written; 0 on ranks that do not write).
+  void finishCheckpoint(double begin, std::uintmax_t bytes);
   std::unique_ptr<CheckpointState> resume_;  ///< the checkpoint a restart continues from
   bool resume_pending_ = false;              ///< its stage has not yet been resumed
   std::size_t stage_index_ = 0;              ///< the stage running
