@@ -136,5 +136,19 @@ TEST(Conductivity, MualemVanishesAtZeroEffectiveSaturation) {
   EXPECT_NEAR(relativeConductivity(curve(ConductivityModel::Mualem), swrc, 1e5), 2.27627e-3, 1e-8);
 }
 
+TEST(Conductivity, WithTheSaturationGivenEqualsTheCurve) {
+  // conductivityAt (S_L from the caller, as the point update has it) = conductivity().
+  const RetentionSpec swrc = vanGenuchtenCurve();
+  for (ConductivityModel model : {ConductivityModel::Constant, ConductivityModel::Hillel,
+                                  ConductivityModel::Mualem, ConductivityModel::Gardner})
+    for (bool effective : {false, true})
+      for (Real suction : {-1e3, 0.0, 10.0, kSuction, 1e5}) {
+        const ConductivitySpec spec = curve(model, effective);
+        EXPECT_EQ(conductivityAt(spec, swrc, suction, saturation(swrc, suction)),
+                  conductivity(spec, swrc, suction))
+            << static_cast<int>(model) << " " << effective << " " << suction;
+      }
+}
+
 }  // namespace
 }  // namespace argine

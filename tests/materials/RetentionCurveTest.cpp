@@ -138,5 +138,16 @@ TEST(Retention, UsableInsideKernel) {
   EXPECT_NEAR(sum, 1.66362568084, 1e-10);
 }
 
+TEST(RetentionCurve, SaturationAndSlopeTogetherEqualEachAlone) {
+  // saturationAndSlope (one x^m for van Genuchten) gives saturation() and
+  // saturationSuctionDerivative() to the bit, on both sides of s = 0 and past S_min.
+  for (const RetentionSpec& spec : {linearCurve(), vanGenuchtenCurve(), gardnerCurve()})
+    for (Real suction : {-5e3, 0.0, 1e-3, 250.0, 3000.0, 4.7e4, 1e6}) {
+      const SaturationAndSlope both = saturationAndSlope(spec, suction);
+      EXPECT_EQ(both.saturation, saturation(spec, suction)) << suction;
+      EXPECT_EQ(both.slope, saturationSuctionDerivative(spec, suction)) << suction;
+    }
+}
+
 }  // namespace
 }  // namespace argine

@@ -82,10 +82,11 @@ KOKKOS_INLINE_FUNCTION Real relativeConductivitySaturationDerivative(const Condu
   return 0;
 }
 
-/// Relative conductivity k_r(s) (-), in [0, 1]. For s <= 0 it is the value at S_L = S_max
-/// (1 when S_max = 1 or with S_e), so k_r is continuous at s = 0.
-KOKKOS_INLINE_FUNCTION Real relativeConductivity(const ConductivitySpec& spec,
-                                                 const RetentionSpec& retention, Real suction) {
+/// relativeConductivity (below) when the caller has S_L = saturation(retention, suction)
+/// already: the SWRC (two pow for van Genuchten) is not evaluated again.
+KOKKOS_INLINE_FUNCTION Real relativeConductivityAt(const ConductivitySpec& spec,
+                                                   const RetentionSpec& retention, Real suction,
+                                                   Real saturation_of_suction) {
   switch (spec.model) {
     case ConductivityModel::Constant:  // Eq. 4.29 with const = 1
       return 1;
@@ -94,9 +95,19 @@ KOKKOS_INLINE_FUNCTION Real relativeConductivity(const ConductivitySpec& spec,
     case ConductivityModel::Hillel:
     case ConductivityModel::Mualem:
       return relativeConductivityOfSaturation(
-          spec, conductivitySaturation(spec, retention, saturation(retention, suction)));
+          spec, conductivitySaturation(spec, retention, saturation_of_suction));
   }
   return 1;
+}
+
+/// Relative conductivity k_r(s) (-), in [0, 1]. For s <= 0 it is the value at S_L = S_max
+/// (1 when S_max = 1 or with S_e), so k_r is continuous at s = 0.
+KOKKOS_INLINE_FUNCTION Real relativeConductivity(const ConductivitySpec& spec,
+                                                 const RetentionSpec& retention, Real suction) {
+  const bool needs_saturation =
+      spec.model == ConductivityModel::Hillel || spec.model == ConductivityModel::Mualem;
+  return relativeConductivityAt(spec, retention, suction,
+                                needs_saturation ? saturation(retention, suction) : Real(1));
 }
 
 /// dk_r/ds (1/Pa), <= 0; 0 for s <= 0. Chain rule through the SWRC for Hillel and Mualem.
@@ -131,6 +142,14 @@ KOKKOS_INLINE_FUNCTION Real relativeConductivitySuctionDerivative(const Conducti
 KOKKOS_INLINE_FUNCTION Real conductivity(const ConductivitySpec& spec,
                                          const RetentionSpec& retention, Real suction) {
   return spec.saturated_conductivity * relativeConductivity(spec, retention, suction);
+}
+
+/// The same with S_L = saturation(retention, suction) given (relativeConductivityAt).
+KOKKOS_INLINE_FUNCTION Real conductivityAt(const ConductivitySpec& spec,
+                                           const RetentionSpec& retention, Real suction,
+                                           Real saturation_of_suction) {
+  return spec.saturated_conductivity *
+         relativeConductivityAt(spec, retention, suction, saturation_of_suction);
 }
 
 }  // namespace argine

@@ -28,6 +28,34 @@ KOKKOS_INLINE_FUNCTION Real effectiveSaturation(const RetentionSpec& spec, Real 
   return (saturation - spec.saturation_min) / range;
 }
 
+namespace detail {
+/// Van Genuchten's x = s/p_ref, m = 1/(1-lambda) and x^m: the pow that S_L and dS_L/ds share.
+struct VanGenuchtenTerms {
+  Real m, x, xm;
+};
+KOKKOS_INLINE_FUNCTION VanGenuchtenTerms vanGenuchtenTerms(const RetentionSpec& spec,
+                                                           Real suction) {
+  VanGenuchtenTerms t;
+  t.m = 1 / (1 - spec.lambda);
+  t.x = suction / spec.reference_pressure;
+  t.xm = kmath::pow(t.x, t.m);
+  return t;
+}
+/// Eq. 4.28: S_L = S_min + (S_max - S_min) (1 + x^m)^(-lambda).
+KOKKOS_INLINE_FUNCTION Real vanGenuchtenSaturation(const RetentionSpec& spec,
+                                                   const VanGenuchtenTerms& t) {
+  const Real range = spec.saturation_max - spec.saturation_min;
+  return spec.saturation_min + range * kmath::pow(1 + t.xm, -spec.lambda);
+}
+/// dS_e/ds = -lambda m x^(m-1) (1 + x^m)^(-lambda-1) / p_ref, times S_max - S_min.
+KOKKOS_INLINE_FUNCTION Real vanGenuchtenSlope(const RetentionSpec& spec,
+                                              const VanGenuchtenTerms& t) {
+  const Real range = spec.saturation_max - spec.saturation_min;
+  return -range * spec.lambda * t.m * (t.xm / t.x) * kmath::pow(1 + t.xm, -spec.lambda - 1) /
+         spec.reference_pressure;
+}
+}  // namespace detail
+
 /// Degree of saturation S_L(s) (-), suction s in Pa (s <= 0: S_max).
 KOKKOS_INLINE_FUNCTION Real saturation(const RetentionSpec& spec, Real suction) {
   if (suction <= 0) return spec.saturation_max;
@@ -35,11 +63,8 @@ KOKKOS_INLINE_FUNCTION Real saturation(const RetentionSpec& spec, Real suction) 
   switch (spec.model) {
     case RetentionModel::Linear:  // Eq. 5.6 with S_max in place of 1, clipped at S_min
       return kmath::fmax(spec.saturation_max - spec.linear_slope * suction, spec.saturation_min);
-    case RetentionModel::VanGenuchten: {  // Eq. 4.28
-      const Real x = suction / spec.reference_pressure;
-      const Real s_e = kmath::pow(1 + kmath::pow(x, 1 / (1 - spec.lambda)), -spec.lambda);
-      return spec.saturation_min + range * s_e;
-    }
+    case RetentionModel::VanGenuchten:  // Eq. 4.28
+      return detail::vanGenuchtenSaturation(spec, detail::vanGenuchtenTerms(spec, suction));
     case RetentionModel::Gardner:
       return spec.saturation_min + range * kmath::exp(-spec.gardner_alpha * suction);
   }
@@ -56,19 +81,28 @@ KOKKOS_INLINE_FUNCTION Real saturationSuctionDerivative(const RetentionSpec& spe
       return spec.saturation_max - spec.linear_slope * suction > spec.saturation_min
                  ? -spec.linear_slope
                  : 0;
-    case RetentionModel::VanGenuchten: {
-      // S_e = (1 + x^m)^(-lambda), x = s/p_ref, m = 1/(1-lambda):
-      // dS_e/ds = -lambda m x^(m-1) (1 + x^m)^(-lambda-1) / p_ref.
-      const Real m = 1 / (1 - spec.lambda);
-      const Real x = suction / spec.reference_pressure;
-      const Real xm = kmath::pow(x, m);
-      return -range * spec.lambda * m * (xm / x) * kmath::pow(1 + xm, -spec.lambda - 1) /
-             spec.reference_pressure;
-    }
+    case RetentionModel::VanGenuchten:
+      return detail::vanGenuchtenSlope(spec, detail::vanGenuchtenTerms(spec, suction));
     case RetentionModel::Gardner:
       return -range * spec.gardner_alpha * kmath::exp(-spec.gardner_alpha * suction);
   }
   return 0;
+}
+
+/// S_L(s) and dS_L/ds(s) together, each to the bit as saturation() and
+/// saturationSuctionDerivative() give it; van Genuchten's x^m is taken once (the Newton
+/// iteration of the liquid pressure needs both at every iterate).
+struct SaturationAndSlope {
+  Real saturation;
+  Real slope;  ///< dS_L/ds (1/Pa), <= 0
+};
+KOKKOS_INLINE_FUNCTION SaturationAndSlope saturationAndSlope(const RetentionSpec& spec,
+                                                             Real suction) {
+  if (suction > 0 && spec.model == RetentionModel::VanGenuchten) {
+    const detail::VanGenuchtenTerms t = detail::vanGenuchtenTerms(spec, suction);
+    return {detail::vanGenuchtenSaturation(spec, t), detail::vanGenuchtenSlope(spec, t)};
+  }
+  return {saturation(spec, suction), saturationSuctionDerivative(spec, suction)};
 }
 
 /// Inverse of saturation(): the suction s >= 0 (Pa) at which S_L = `saturation`, used to

@@ -62,7 +62,8 @@ KOKKOS_INLINE_FUNCTION LiquidState saturationAndConductivity(const PointMaterial
   }
   const Real suction = suctionOfPressure(pressure);
   state.saturation = saturation(material.retention, suction);
-  state.conductivity = conductivity(material.conductivity, material.retention, suction);
+  state.conductivity =
+      conductivityAt(material.conductivity, material.retention, suction, state.saturation);
   return state;
 }
 
@@ -115,16 +116,16 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
   Real low = -kmath::infinity(), high = kmath::infinity();
   constexpr int kMaxIterations = 60;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const Real suction = suctionOfPressure(pressure);
-    const Real s = saturation(material.retention, suction);
+    const SaturationAndSlope swrc =
+        saturationAndSlope(material.retention, suctionOfPressure(pressure));
+    const Real s = swrc.saturation;
     const Real rho = liquidDensity(material.liquid, pressure);
     const Real residual = s * rho - content;
     if (residual > 0)
       high = pressure;
     else
       low = pressure;
-    const Real slope =
-        liquidContentSlope(rho, s, saturationSuctionDerivative(material.retention, suction), bulk);
+    const Real slope = liquidContentSlope(rho, s, swrc.slope, bulk);
     Real next = pressure - residual / slope;
     const bool bracketed = low > -kmath::infinity() && high < kmath::infinity();
     if (!(next > low && next < high) && bracketed) next = 0.5 * (low + high);
