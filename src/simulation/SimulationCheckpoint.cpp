@@ -45,12 +45,6 @@ void Simulation::readRestartCheckpoint() {
   // Every rank reads the whole file: the points of all ranks (as many as the deck seeds).
   state->points.allocate(static_cast<int>(totalPoints()));
   readCheckpoint(path, deck_hash_, *state);
-  const int ranks = distributed() ? ranks_->size() : 1;
-  if (state->rank_point_counts.size() != static_cast<std::size_t>(ranks))
-    throw InputError(path, "checkpoint of a run on " +
-                               std::to_string(state->rank_point_counts.size()) +
-                               " MPI rank(s); this run has " + std::to_string(ranks) +
-                               ": restart it on as many ranks");
   if (state->mesh_nodes != mesh_.numNodes() || state->mesh_elements != mesh_.numElements())
     throw InputError(
         path, "checkpoint of a mesh of " + std::to_string(state->mesh_nodes) + " nodes and " +
@@ -91,19 +85,27 @@ void Simulation::restoreFromCheckpoint() {
     solver_->setTime(s.stage_start);
     solver_->beginStage(deck_.stages[s.stage_index]);
   }
-  // This rank's points, in the order the checkpointed rank held them (the order of its
-  // sums); the solver refers to points_, so it sees them.
+  // This rank's points; the solver refers to points_, so it sees them.
   const int rank = distributed() ? ranks_->rank() : 0;
-  if (distributed()) {
+  const int ranks = distributed() ? ranks_->size() : 1;
+  const bool same_ranks = s.rank_point_counts.size() == static_cast<std::size_t>(ranks);
+  ExplicitTwoPhaseSolver::ResumeState solver_state = s.solver;
+  if (same_ranks) {  // each rank its own points in the order it held them (of its sums)
     std::int64_t first = 0;
     for (int r = 0; r < rank; ++r) first += s.rank_point_counts[r];
-    points_ =
-        pointRange(s.points, static_cast<int>(first), static_cast<int>(s.rank_point_counts[rank]));
+    points_ = distributed() ? pointRange(s.points, static_cast<int>(first),
+                                         static_cast<int>(s.rank_point_counts[rank]))
+                            : s.points;
+    if (rank > 0) solver_state = s.other_rank_solvers[rank - 1];
   } else {
+    // Another number of ranks: each keeps the points of its elements (the deck's partition
+    // for this many ranks). The run goes on, but not bit for bit: the shared nodes' partial
+    // sums are added in another order. The step controller's cached choice names a point
+    // of another rank's numbering: it is evaluated again.
     points_ = s.points;
+    if (distributed()) keepOwnedPoints(*ranks_, points_);
+    solver_state.time_step.stale = true;
   }
-  ExplicitTwoPhaseSolver::ResumeState solver_state =
-      rank == 0 ? s.solver : s.other_rank_solvers[rank - 1];
   solver_state.stage_started = s.mid_stage;
   solver_->resume(solver_state);
 
@@ -129,6 +131,11 @@ void Simulation::restoreFromCheckpoint() {
                 deck_.stages[s.stage_index].name.c_str(), solver_->time(),
                 static_cast<long long>(s.steps));
   log(line);
+  if (!same_ranks)
+    log("warning: the checkpoint was made on " + std::to_string(s.rank_point_counts.size()) +
+        " MPI rank(s), this run has " + std::to_string(ranks) +
+        ": it continues, but not bit for bit (sums at rank borders are added in another "
+        "order)");
 }
 
 bool Simulation::resumeStage(RelaxationMonitor* relaxation) {
