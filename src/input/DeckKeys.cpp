@@ -748,6 +748,19 @@ ListSchema guardKeys() {
 
 // ---- end of issue P8 deck keys ----
 
+// ---- issue P7 deck keys ----
+
+ListSchema parallelKeys() {
+  ListSchema parallel;
+  parallel.add(KeySpec::boolean("Reproducible Sums",
+                                "node sums compensated and rounded once (doc/parallel.md): the "
+                                "results do not depend on the number of MPI ranks or on the "
+                                "order of the points, also through local damping; about 2x "
+                                "the cost of the particle-to-grid kernels")
+                   .byDefault(false));
+  return parallel;
+}
+
 ListSchema makeDeckSchema() {
   ListSchema deck;
   deck.add(
@@ -767,6 +780,7 @@ ListSchema makeDeckSchema() {
                             "initial stress and liquid pressure of the points"));
   deck.add(KeySpec::sublist("Probes", probeKeys(), "CSV time series of points and sections"));
   deck.add(KeySpec::sublist("Guards", guardKeys(), "physical guards checked after each step"));
+  deck.add(KeySpec::sublist("Parallel", parallelKeys(), "how a run over MPI ranks adds up"));
   checkSchema(deck);
   return deck;
 }

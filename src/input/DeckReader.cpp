@@ -154,6 +154,8 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
   deck.initialisation = parseInitialisation(top.section("Initialisation"));  // issue P4
   deck.probes = parseProbes(top.section("Probes"));                          // issue P4
   deck.guards = parseGuards(top.section("Guards"));                          // issue P8
+  deck.parallel.reproducible_sums =
+      top.section("Parallel").boolean("Reproducible Sums");  // issue P7
   checkDeck(deck);
   return deck;
 }

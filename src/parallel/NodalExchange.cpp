@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include "argine/parallel/RankDecomposition.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -17,6 +18,19 @@ void NodalExchange::sum(std::initializer_list<NodalFieldRef> fields) {
 }
 
 void NodalExchange::sum(const std::vector<NodalFieldRef>& fields) {
+  exchange(fields, 0);
+}
+
+void NodalExchange::sumCompensated(std::initializer_list<NodalFieldRef> hi,
+                                   std::initializer_list<NodalFieldRef> lo) {
+  fields_.assign(hi.begin(), hi.end());
+  int width = 0;
+  for (const auto& f : fields_) width += f.components;
+  fields_.insert(fields_.end(), lo.begin(), lo.end());
+  exchange(fields_, width);
+}
+
+void NodalExchange::exchange(const std::vector<NodalFieldRef>& fields, int compensated_width) {
   const auto& neighbours = decomposition_.neighbours();
   ++traffic_.exchanges;
   traffic_.last_bytes = 0;
@@ -57,18 +71,30 @@ void NodalExchange::sum(const std::vector<NodalFieldRef>& fields) {
   traffic_.bytes += traffic_.last_bytes;
 
   // Ascending rank order at every node: the lower neighbours, this rank, the higher ones.
+  // Compensated: the first `compensated_width` values of a node are the high parts, the next
+  // as many their low parts; a rank's (hi, lo) is added to the total's with TwoSum.
   std::fill(total_.begin(), total_.begin() + slots * width, 0.0);
   const int me = decomposition_.rank();
+  const int pairs = compensated_width;
+  auto add_node = [&](Real* total, const Real* partial) {
+    for (int c = 0; c < pairs; ++c) {
+      addCompensated(total[c], total[pairs + c], partial[c]);
+      total[pairs + c] += partial[pairs + c];
+    }
+    for (int c = 2 * pairs; c < width; ++c) total[c] += partial[c];
+  };
   bool own_added = false;
   auto add_own = [&] {
-    for (std::size_t v = 0; v < slots * width; ++v) total_[v] += own_[v];
+    for (std::size_t j = 0; j < slots; ++j) add_node(&total_[j * width], &own_[j * width]);
     own_added = true;
   };
   for (std::size_t k = 0; k < neighbours.size(); ++k) {
     if (!own_added && neighbours[k].rank > me) add_own();
     const Real* received = receive_[k].data();
-    for (const int slot : neighbours[k].slots)
-      for (int c = 0; c < width; ++c) total_[slot * width + c] += *received++;
+    for (const int slot : neighbours[k].slots) {
+      add_node(&total_[slot * width], received);
+      received += width;
+    }
   }
   if (!own_added) add_own();
 

@@ -12,21 +12,48 @@
 
 namespace argine {
 
-void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& g) {
-  exchange.sum({nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
-                nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i),
-                nodalField(g.volume_liquid_i), nodalField(g.momentum_solid_i),
-                nodalField(g.momentum_liquid_i), nodalField(g.force_mixture_i),
-                nodalField(g.force_liquid_i)});
+void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& g, GridFields* compensation) {
+  if (!compensation) {
+    exchange.sum({nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
+                  nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i),
+                  nodalField(g.volume_liquid_i), nodalField(g.momentum_solid_i),
+                  nodalField(g.momentum_liquid_i), nodalField(g.force_mixture_i),
+                  nodalField(g.force_liquid_i)});
+    return;
+  }
+  const GridFields& c = *compensation;
+  exchange.sumCompensated(
+      {nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
+       nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i), nodalField(g.volume_liquid_i),
+       nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i),
+       nodalField(g.force_mixture_i), nodalField(g.force_liquid_i)},
+      {nodalField(c.mass_solid_i), nodalField(c.mass_liquid_i),
+       nodalField(c.mass_liquid_intrinsic_i), nodalField(c.drag_i), nodalField(c.volume_liquid_i),
+       nodalField(c.momentum_solid_i), nodalField(c.momentum_liquid_i),
+       nodalField(c.force_mixture_i), nodalField(c.force_liquid_i)});
 }
 
-void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& g) {
-  exchange.sum({nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)});
+void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& g, GridFields* compensation) {
+  if (!compensation) {
+    exchange.sum({nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)});
+    return;
+  }
+  exchange.sumCompensated(
+      {nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)},
+      {nodalField(compensation->momentum_solid_i), nodalField(compensation->momentum_liquid_i)});
 }
 
-void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& f) {
-  exchange.sum(
-      {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
+void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& f,
+                                       BoundaryGradientFields* compensation) {
+  if (!compensation) {
+    exchange.sum(
+        {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
+    return;
+  }
+  const BoundaryGradientFields& c = *compensation;
+  exchange.sumCompensated(
+      {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)},
+      {nodalField(c.mass_gradient_i), nodalField(c.flux_weight_i), nodalField(c.wet_volume_i)});
 }
 
 void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,

@@ -60,6 +60,7 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   table_ = MaterialTable(materials);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
+  setReproducibleSums(reproducible_sums_);  // the new scratch compensated as the old
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -143,6 +144,7 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
+  setReproducibleSums(reproducible_sums_);
   outflow_limit_.distribute(exchange_.get(), decomposition.comm(), mesh_.numNodes());
   keepOwnedPoints(decomposition, points_);
   rates_.allocate(points_.count);
@@ -150,6 +152,15 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
   nodes_next_changed_ = true;
   free_boundary_stale_ = true;
+}
+
+void ExplicitTwoPhaseSolver::setReproducibleSums(bool on) {
+  reproducible_sums_ = on;
+  const int nodes = on ? mesh_.numNodes() : 0;
+  if (grid_lo_.numNodes() != nodes) grid_lo_.allocate(nodes);
+  if (static_cast<int>(boundary_lo_.wet_volume_i.extent(0)) != nodes) boundary_lo_.allocate(nodes);
+  averaging_.compensateSums(on);
+  head_stabilisation_.compensateSums(on);
 }
 
 Kokkos::View<const int*, MemSpace> ExplicitTwoPhaseSolver::alwaysActiveNodes() const {
@@ -202,8 +213,10 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   grid_.zero(nodes_in_use_);
   if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
   nodes_next_changed_ = false;
-  mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_);
-  if (exchange_) sumGridAtSharedNodes(*exchange_, grid_);  // several ranks: complete the sums
+  mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_, gridCompensation());
+  if (exchange_)  // several ranks: complete the sums
+    sumGridAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
+  if (reproducible_sums_) foldCompensatedGridSums(nodes_in_use_, grid_, grid_lo_);
   boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
                              grid_.force_liquid_i);
   computeNodalVelocities(nodes_in_use_, grid_);
@@ -246,8 +259,13 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
-                       boundary_fields_);  // 4.51, n_L, flux weights at t^k
-  if (exchange_) sumBoundaryGradientsAtSharedNodes(*exchange_, boundary_fields_);
+                       boundary_fields_,  // 4.51, n_L, flux weights at t^k
+                       reproducible_sums_ ? &boundary_lo_ : nullptr);
+  if (exchange_)
+    sumBoundaryGradientsAtSharedNodes(*exchange_, boundary_fields_,
+                                      reproducible_sums_ ? &boundary_lo_ : nullptr);
+  if (reproducible_sums_)
+    foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
   argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
 }
 
@@ -291,9 +309,12 @@ void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions() {
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),
   // and sums the kinetic energies, in the same pass over the points.
-  kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
-                                                velocity_blend_, points_, grid_);
-  if (exchange_) sumMomentaAtSharedNodes(*exchange_, grid_);  // (kinetic_: end of step)
+  kinetic_ =
+      updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
+                                         velocity_blend_, points_, grid_, gridCompensation());
+  if (exchange_)  // (kinetic_: end of step)
+    sumMomentaAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
+  if (reproducible_sums_) foldCompensatedMomenta(nodes_in_use_, grid_, grid_lo_);
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {

@@ -5,6 +5,7 @@
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/PointShapes.hpp"
 
@@ -14,11 +15,12 @@ namespace {
 
 namespace KE = Kokkos::Experimental;
 
-template <int kNodes>
+template <int kNodes, bool kCompensated>
 void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                               const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                               const Kokkos::View<const int*, MemSpace>& liquid_m,
-                              const GridFields& grid, BoundaryGradientFields& fields) {
+                              const GridFields& grid, BoundaryGradientFields& fields,
+                              const BoundaryGradientFields& lo) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
@@ -30,6 +32,7 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   auto gradient_sv = KE::create_scatter_view(fields.mass_gradient_i);
   auto weight_sv = KE::create_scatter_view(fields.flux_weight_i);
   auto wet_sv = KE::create_scatter_view(fields.wet_volume_i);
+  const BoundaryGradientFields hi = fields;
   Kokkos::parallel_for(
       "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -40,13 +43,16 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
         auto gradient_i = gradient_sv.access();
         for (int a = 0; a < kNodes; ++a)
           for (int d = 0; d < kDim; ++d)
-            gradient_i(shape.node[a], d) += m_mixture * shape.gradient[a][d];
+            addToNode<kCompensated>(gradient_i, hi.mass_gradient_i, lo.mass_gradient_i,
+                                    shape.node[a], d, m_mixture * shape.gradient[a][d]);
         if (!wet) return;
         auto weight_i = weight_sv.access();
         auto wet_i = wet_sv.access();
         const Real volume = volume_p(p);
         const Real wet_volume = porosity_p(p) * saturation_p(p) * volume;
-        for (int a = 0; a < kNodes; ++a) wet_i(shape.node[a]) += shape.value[a] * wet_volume;
+        for (int a = 0; a < kNodes; ++a)
+          addToNode<kCompensated>(wet_i, hi.wet_volume_i, lo.wet_volume_i, shape.node[a],
+                                  shape.value[a] * wet_volume);
         if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
           // the same centre value and point gradient of c as interpolateVelocityGradients
           constexpr Real centre = Real(1) / kNodes;
@@ -59,13 +65,15 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
           }
           for (int a = 0; a < kNodes; ++a)
             for (int d = 0; d < kDim; ++d)
-              weight_i(shape.node[a], d) +=
-                  volume * (c_centre * shape.gradient[a][d] + centre * grad_c[d]);
+              addToNode<kCompensated>(
+                  weight_i, hi.flux_weight_i, lo.flux_weight_i, shape.node[a], d,
+                  volume * (c_centre * shape.gradient[a][d] + centre * grad_c[d]));
         } else {
           const Real m_liquid = mass_liquid_p(p);
           for (int a = 0; a < kNodes; ++a)
             for (int d = 0; d < kDim; ++d)
-              weight_i(shape.node[a], d) += m_liquid * shape.gradient[a][d];
+              addToNode<kCompensated>(weight_i, hi.flux_weight_i, lo.flux_weight_i, shape.node[a],
+                                      d, m_liquid * shape.gradient[a][d]);
         }
       });
   KE::contribute(fields.mass_gradient_i, gradient_sv);
@@ -102,11 +110,25 @@ void BoundaryGradientFields::zero(const ActiveNodes& active) {
 void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shapes,
                           const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                           const Kokkos::View<const int*, MemSpace>& liquid_m,
-                          const GridFields& grid, BoundaryGradientFields& fields) {
+                          const GridFields& grid, BoundaryGradientFields& fields,
+                          const BoundaryGradientFields* compensation) {
   if (shapes.type == ElementType::Tri3)
-    mapBoundaryGradientsImpl<3>(points, shapes, materials_m, liquid_m, grid, fields);
+    compensation ? mapBoundaryGradientsImpl<3, true>(points, shapes, materials_m, liquid_m, grid,
+                                                     fields, *compensation)
+                 : mapBoundaryGradientsImpl<3, false>(points, shapes, materials_m, liquid_m, grid,
+                                                      fields, fields);
   else
-    mapBoundaryGradientsImpl<4>(points, shapes, materials_m, liquid_m, grid, fields);
+    compensation ? mapBoundaryGradientsImpl<4, true>(points, shapes, materials_m, liquid_m, grid,
+                                                     fields, *compensation)
+                 : mapBoundaryGradientsImpl<4, false>(points, shapes, materials_m, liquid_m, grid,
+                                                      fields, fields);
+}
+
+void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientFields& f,
+                                 BoundaryGradientFields& lo) {
+  foldCompensatedSums(nodes, f.mass_gradient_i, lo.mass_gradient_i);
+  foldCompensatedSums(nodes, f.flux_weight_i, lo.flux_weight_i);
+  foldCompensatedSums(nodes, f.wet_volume_i, lo.wet_volume_i);
 }
 
 void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {

@@ -74,7 +74,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         head_p(p) = piezometricPressure(material, pressure, pts.position(p, 1), gravity);
       });
   averagePointValues(points, shapes, active, mode_point_, conductance_point_, head_point_,
-                     element_sums_, node_sums_, exchange_);
+                     element_sums_, node_sums_, exchange_, compensation_);
   const auto strain_increment_p = rates.strain_increment_p;
   const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
   const auto divergence_p = rates.liquid_divergence_increment_p;

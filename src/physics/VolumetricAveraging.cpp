@@ -72,7 +72,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
                        : flux_divergence_p(p);
         });
     averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                       element_sums_, node_sums_, exchange_);
+                       element_sums_, node_sums_, exchange_, compensation_);
     Kokkos::parallel_for(
         "averaging_liquid_out", Kokkos::RangePolicy<ExecSpace>(0, count),
         KOKKOS_LAMBDA(const int p) {
@@ -92,7 +92,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
         value_p(p) = strain_increment_p(p, XX) + strain_increment_p(p, YY);
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_, exchange_);
+                     element_sums_, node_sums_, exchange_, compensation_);
   Kokkos::parallel_for(
       "averaging_strain_out", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         if (mode_p(p) == kNone || element_p(p) < 0) return;
@@ -139,7 +139,7 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
         value_p(p) = pts.pressure_liquid(p) - old_p(p);
       });
   averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_, exchange_);
+                     element_sums_, node_sums_, exchange_, compensation_);
   Kokkos::parallel_for(
       "averaging_pressure_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {

@@ -72,6 +72,7 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
   solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
   // Output and the log follow points by id, so the solver may reorder them for locality.
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
+  solver_->setReproducibleSums(deck_.parallel.reproducible_sums);  // (P7) before distributing
   // Several MPI ranks: every rank seeded the same points; the explicit stages keep those of
   // its elements (doc/parallel.md). Only rank 0 prints and writes.
   int initialised = 0, ranks = 1, rank = 0;

@@ -1,6 +1,7 @@
 #include "argine/transfer/GridFields.hpp"
 
 #include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -44,6 +45,22 @@ void GridFields::zero(const ActiveNodes& active) {
           g.force_liquid_i(i, d) = 0;
         }
       });
+}
+
+void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& g, GridFields& lo) {
+  foldCompensatedSums(nodes, g.mass_solid_i, lo.mass_solid_i);
+  foldCompensatedSums(nodes, g.mass_liquid_i, lo.mass_liquid_i);
+  foldCompensatedSums(nodes, g.mass_liquid_intrinsic_i, lo.mass_liquid_intrinsic_i);
+  foldCompensatedSums(nodes, g.drag_i, lo.drag_i);
+  foldCompensatedSums(nodes, g.volume_liquid_i, lo.volume_liquid_i);
+  foldCompensatedSums(nodes, g.force_mixture_i, lo.force_mixture_i);
+  foldCompensatedSums(nodes, g.force_liquid_i, lo.force_liquid_i);
+  foldCompensatedMomenta(nodes, g, lo);
+}
+
+void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& g, GridFields& lo) {
+  foldCompensatedSums(nodes, g.momentum_solid_i, lo.momentum_solid_i);
+  foldCompensatedSums(nodes, g.momentum_liquid_i, lo.momentum_liquid_i);
 }
 
 }  // namespace argine

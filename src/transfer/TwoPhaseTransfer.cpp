@@ -5,6 +5,7 @@
 #include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
@@ -24,9 +25,10 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
     f(std::integral_constant<int, 4>{});
 }
 
-template <int kNodes>
+template <int kNodes, bool kCompensated>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
-                         const LiquidCarrying& liquid_m, Real gravity, GridFields& grid) {
+                         const LiquidCarrying& liquid_m, Real gravity, GridFields& grid,
+                         const GridFields& lo) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
@@ -50,6 +52,7 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   auto momentum_liquid_sv = KE::create_scatter_view(grid.momentum_liquid_i);
   auto force_mixture_sv = KE::create_scatter_view(grid.force_mixture_i);
   auto force_liquid_sv = KE::create_scatter_view(grid.force_liquid_i);
+  const GridFields hi = grid;  // the sums themselves (compensated: with lo)
 
   Kokkos::parallel_for(
       "p2g_two_phase", Kokkos::RangePolicy<ExecSpace>(0, points.count), KOKKOS_LAMBDA(const int p) {
@@ -75,11 +78,15 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
           const int i = shape.node[a];
           const Real N = shape.value[a];
           const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
-          mass_solid_i(i) += N * m_solid;
-          momentum_solid_i(i, 0) += N * m_solid * vsx;
-          momentum_solid_i(i, 1) += N * m_solid * vsy;
-          force_mixture_i(i, 0) += -(sxx * dx + sxy * dy) * volume;
-          force_mixture_i(i, 1) += -(sxy * dx + syy * dy) * volume + N * weight_mixture;
+          addToNode<kCompensated>(mass_solid_i, hi.mass_solid_i, lo.mass_solid_i, i, N * m_solid);
+          addToNode<kCompensated>(momentum_solid_i, hi.momentum_solid_i, lo.momentum_solid_i, i, 0,
+                                  N * m_solid * vsx);
+          addToNode<kCompensated>(momentum_solid_i, hi.momentum_solid_i, lo.momentum_solid_i, i, 1,
+                                  N * m_solid * vsy);
+          addToNode<kCompensated>(force_mixture_i, hi.force_mixture_i, lo.force_mixture_i, i, 0,
+                                  -(sxx * dx + sxy * dy) * volume);
+          addToNode<kCompensated>(force_mixture_i, hi.force_mixture_i, lo.force_mixture_i, i, 1,
+                                  -(sxy * dx + syy * dy) * volume + N * weight_mixture);
         }
         if (!wet) return;
 
@@ -100,15 +107,22 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
         for (int a = 0; a < kNodes; ++a) {
           const int i = shape.node[a];
           const Real N = shape.value[a];
-          mass_liquid_i(i) += N * m_liquid;
-          mass_intrinsic_i(i) += N * m_intrinsic;
-          drag_i(i) += N * drag;
-          volume_liquid_i(i) += N * volume;
-          momentum_liquid_i(i, 0) += N * m_intrinsic * vlx;
-          momentum_liquid_i(i, 1) += N * m_intrinsic * vly;
+          addToNode<kCompensated>(mass_liquid_i, hi.mass_liquid_i, lo.mass_liquid_i, i,
+                                  N * m_liquid);
+          addToNode<kCompensated>(mass_intrinsic_i, hi.mass_liquid_intrinsic_i,
+                                  lo.mass_liquid_intrinsic_i, i, N * m_intrinsic);
+          addToNode<kCompensated>(drag_i, hi.drag_i, lo.drag_i, i, N * drag);
+          addToNode<kCompensated>(volume_liquid_i, hi.volume_liquid_i, lo.volume_liquid_i, i,
+                                  N * volume);
+          addToNode<kCompensated>(momentum_liquid_i, hi.momentum_liquid_i, lo.momentum_liquid_i, i,
+                                  0, N * m_intrinsic * vlx);
+          addToNode<kCompensated>(momentum_liquid_i, hi.momentum_liquid_i, lo.momentum_liquid_i, i,
+                                  1, N * m_intrinsic * vly);
           // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
-          force_liquid_i(i, 0) += shape.gradient[a][0] * pressure_volume;
-          force_liquid_i(i, 1) += shape.gradient[a][1] * pressure_volume + N * weight_liquid;
+          addToNode<kCompensated>(force_liquid_i, hi.force_liquid_i, lo.force_liquid_i, i, 0,
+                                  shape.gradient[a][0] * pressure_volume);
+          addToNode<kCompensated>(force_liquid_i, hi.force_liquid_i, lo.force_liquid_i, i, 1,
+                                  shape.gradient[a][1] * pressure_volume + N * weight_liquid);
         }
       });
 
@@ -123,11 +137,11 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   KE::contribute(grid.force_liquid_i, force_liquid_sv);
 }
 
-template <int kNodes>
+template <int kNodes, bool kCompensated>
 KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const LiquidCarrying& liquid_m, Real dt,
                                                 VelocityBlend blend, MaterialPoints& points,
-                                                GridFields& grid) {
+                                                GridFields& grid, const GridFields& lo) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
@@ -143,6 +157,8 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const Real pic_solid = blend.solid, pic_liquid = blend.liquid;
   auto momentum_solid_sv = KE::create_scatter_view(grid.momentum_solid_i);
   auto momentum_liquid_sv = KE::create_scatter_view(grid.momentum_liquid_i);
+  const auto momentum_solid_hi = grid.momentum_solid_i, momentum_liquid_hi = grid.momentum_liquid_i;
+  const auto momentum_solid_lo = lo.momentum_solid_i, momentum_liquid_lo = lo.momentum_liquid_i;
   Real kinetic_solid = 0, kinetic_liquid = 0;
   int non_finite = 0;
   Kokkos::parallel_reduce(
@@ -179,8 +195,10 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         for (int a = 0; a < kNodes; ++a) {
           const int i = shape.node[a];
           const Real N = shape.value[a];
-          momentum_solid_i(i, 0) += N * ms * vsx;
-          momentum_solid_i(i, 1) += N * ms * vsy;
+          addToNode<kCompensated>(momentum_solid_i, momentum_solid_hi, momentum_solid_lo, i, 0,
+                                  N * ms * vsx);
+          addToNode<kCompensated>(momentum_solid_i, momentum_solid_hi, momentum_solid_lo, i, 1,
+                                  N * ms * vsy);
         }
         if (!wet) return;
         // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
@@ -201,8 +219,10 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
         for (int a = 0; a < kNodes; ++a) {
           const int i = shape.node[a];
           const Real N = shape.value[a];
-          momentum_liquid_i(i, 0) += N * ml * vlx;
-          momentum_liquid_i(i, 1) += N * ml * vly;
+          addToNode<kCompensated>(momentum_liquid_i, momentum_liquid_hi, momentum_liquid_lo, i, 0,
+                                  N * ml * vlx);
+          addToNode<kCompensated>(momentum_liquid_i, momentum_liquid_hi, momentum_liquid_lo, i, 1,
+                                  N * ml * vly);
         }
       },
       kinetic_solid, kinetic_liquid, non_finite);
@@ -290,9 +310,14 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
 }  // namespace
 
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
-                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid) {
+                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid,
+                     const GridFields* compensation) {
   withNodeCount(shapes, [&](auto nodes) {
-    mapPointsToGridImpl<decltype(nodes)::value>(points, shapes, liquid_m, gravity, grid);
+    constexpr int kNodes = decltype(nodes)::value;
+    if (compensation)
+      mapPointsToGridImpl<kNodes, true>(points, shapes, liquid_m, gravity, grid, *compensation);
+    else
+      mapPointsToGridImpl<kNodes, false>(points, shapes, liquid_m, gravity, grid, grid);
   });
 }
 
@@ -319,7 +344,7 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  const LiquidCarrying& liquid_m,
                                                  const ActiveNodes& active, Real dt,
                                                  VelocityBlend blend, MaterialPoints& points,
-                                                 GridFields& grid) {
+                                                 GridFields& grid, const GridFields* compensation) {
   const auto nodes = active.nodes();
   const auto momentum_solid_i = grid.momentum_solid_i;
   const auto momentum_liquid_i = grid.momentum_liquid_i;
@@ -331,8 +356,13 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
       });
   KineticTotals totals;
   withNodeCount(shapes, [&](auto count) {
-    totals = updateVelocitiesAndMapMomentaImpl<decltype(count)::value>(shapes, liquid_m, dt, blend,
-                                                                       points, grid);
+    constexpr int kNodes = decltype(count)::value;
+    if (compensation)
+      totals = updateVelocitiesAndMapMomentaImpl<kNodes, true>(shapes, liquid_m, dt, blend, points,
+                                                               grid, *compensation);
+    else
+      totals = updateVelocitiesAndMapMomentaImpl<kNodes, false>(shapes, liquid_m, dt, blend, points,
+                                                                grid, grid);
   });
   return totals;
 }

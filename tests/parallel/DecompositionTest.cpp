@@ -11,6 +11,7 @@
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 namespace {
@@ -79,6 +80,43 @@ TEST(RankDecomposition, SharedNodesSumOverRanks) {
   for (int i = 0; i < mesh.numNodes(); ++i) owned(i) = mask(i);
   MPI_Allreduce(MPI_IN_PLACE, owned.data(), mesh.numNodes(), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(owned(i), 1.0) << "node " << i;
+}
+
+TEST(RankDecomposition, CompensatedSumsAtSharedNodesKeepWhatPlainSumsLose) {
+  // Each rank holds the compensated pair (hi, lo) of its partial sum at the shared nodes:
+  // rank r adds 1e16 (r even) or -1e16 (r odd) and then 1 + r. The exact total is
+  // sum (1 + r) (+ 1e16 if the count of ranks touching the node is odd); plain partial sums
+  // have lost the small terms already, the compensated exchange keeps them.
+  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  const auto& owner = ranks.elementOwners();
+  const auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
+  std::vector<std::vector<int>> touching(mesh.numNodes());
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int a = 0; a < 4; ++a) {
+      auto& list = touching[C(e, a)];
+      if (std::find(list.begin(), list.end(), owner[e]) == list.end()) list.push_back(owner[e]);
+    }
+  Kokkos::View<Real*, MemSpace> hi("hi", mesh.numNodes()), lo("lo", mesh.numNodes());
+  const int me = ranks.rank();
+  for (int i = 0; i < mesh.numNodes(); ++i)
+    if (std::find(touching[i].begin(), touching[i].end(), me) != touching[i].end()) {
+      addCompensated(hi(i), lo(i), me % 2 == 0 ? 1e16 : -1e16);
+      addCompensated(hi(i), lo(i), 1.0 + me);
+    }
+  NodalExchange exchange(ranks);
+  exchange.sumCompensated({nodalField(hi)}, {nodalField(lo)});
+  for (int i = 0; i < mesh.numNodes(); ++i) {
+    if (std::find(touching[i].begin(), touching[i].end(), me) == touching[i].end()) continue;
+    std::vector<int> around = touching[i];
+    std::sort(around.begin(), around.end());
+    Real big = 0, small = 0;
+    for (const int r : around) {
+      big += r % 2 == 0 ? 1e16 : -1e16;
+      small += 1.0 + r;
+    }
+    EXPECT_EQ(hi(i) + lo(i), big + small) << "node " << i;  // exact in doubles here
+  }
 }
 
 TEST(PointMigration, PointsGoToTheOwnerOfTheirElementWithAllFields) {

@@ -8,12 +8,14 @@
 ///
 ///   argine_benchmark [--scenes quad4-saturated,tri3-saturated,...] [--steps 100]
 ///                    [--repeat 3] [--warmup 5] [--sort-interval N] [--update-interval 1]
-///                    [--shuffle] [--dump PREFIX]
+///                    [--shuffle] [--reproducible-sums] [--dump PREFIX]
 ///
 /// --sort-interval: steps between sorts of the points by element (0: never; default the
 /// solver's recommended interval). --update-interval: recompute the critical time step every
 /// N steps (the deck's Time Step/Update Interval; default 1 as in the deck). --shuffle:
-/// permute the points randomly first (points mixed by large deformations). The closing
+/// permute the points randomly first (points mixed by large deformations).
+/// --reproducible-sums: the compensated node sums of `Parallel: {Reproducible Sums: true}`
+/// (what they cost). The closing
 /// fingerprint of each scene (a hash of all point fields in id order) tells whether two
 /// builds give bit-for-bit the same results; --dump PREFIX writes the final point states
 /// to PREFIX_<scene>.txt (in id order) to see by how much two builds differ.
@@ -48,6 +50,7 @@ struct Settings {
   int sort_interval = ExplicitTwoPhaseSolver::kRecommendedSortInterval;
   int update_interval = 1;
   bool shuffle = false;
+  bool reproducible_sums = false;
 };
 
 /// One timed block of steps.
@@ -120,6 +123,7 @@ bool runScene(const std::string& name, const Settings& settings, const std::stri
   scene.stage.time_step.update_interval = settings.update_interval;
   ExplicitTwoPhaseSolver solver(scene.mesh, scene.points, scene.materials);
   solver.setSortInterval(settings.sort_interval);
+  solver.setReproducibleSums(settings.reproducible_sums);
   solver.beginStage(scene.stage);
   for (int k = 0; k < settings.warmup; ++k) solver.step(solver.chooseTimeStep().time_step);
 
@@ -155,9 +159,10 @@ bool runScene(const std::string& name, const Settings& settings, const std::stri
   std::printf("scene %s: %d points, %d elements (%d with points), %d nodes (%d active)\n",
               name.c_str(), scene.points.count, scene.mesh.numElements(), elements_with_points,
               scene.mesh.numNodes(), solver.diagnostics().active_nodes);
-  std::printf("  %d steps x %d repeats after %d warm-up steps, sort every %d, dt every %d, %s\n",
+  std::printf("  %d steps x %d repeats after %d warm-up steps, sort every %d, dt every %d, %s%s\n",
               settings.steps, settings.repeat, settings.warmup, settings.sort_interval,
-              settings.update_interval, settings.shuffle ? "points shuffled" : "points seeded");
+              settings.update_interval, settings.shuffle ? "points shuffled" : "points seeded",
+              settings.reproducible_sums ? ", reproducible sums" : "");
   std::printf("  dt = %.3g s (%s), load average %s\n", solver.diagnostics().time_step,
               criterionName(solver.diagnostics().time_step_choice.governing),
               loadAverage().c_str());
@@ -173,9 +178,10 @@ bool runScene(const std::string& name, const Settings& settings, const std::stri
 }
 
 int run(int argc, char** argv) {
-  const verification::CommandLine options(argc, argv,
-                                          {"scenes", "steps", "repeat", "warmup", "sort-interval",
-                                           "update-interval", "shuffle", "dump"});
+  const verification::CommandLine options(
+      argc, argv,
+      {"scenes", "steps", "repeat", "warmup", "sort-interval", "update-interval", "shuffle",
+       "reproducible-sums", "dump"});
   Settings settings;
   settings.steps = static_cast<int>(options.number("steps", settings.steps));
   settings.repeat = std::max(1, static_cast<int>(options.number("repeat", settings.repeat)));
@@ -185,6 +191,7 @@ int run(int argc, char** argv) {
   settings.update_interval =
       static_cast<int>(options.number("update-interval", settings.update_interval));
   settings.shuffle = options.has("shuffle");
+  settings.reproducible_sums = options.has("reproducible-sums");
   std::vector<std::string> scenes = sceneNames();
   if (options.has("scenes")) {
     scenes.clear();

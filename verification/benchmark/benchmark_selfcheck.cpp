@@ -177,12 +177,14 @@ void checkRelocation(ElementType type) {
 /// (the P2G sums in another order), points ordered by element after a sort, the time-step
 /// choice naming the right point after the permutation.
 void checkSorting() {
-  auto run = [](int sort_interval, StepProfile& profile, TimeStepChoice& choice) {
+  auto run = [](int sort_interval, StepProfile& profile, TimeStepChoice& choice,
+                bool shuffle = true, bool reproducible = false) {
     benchmark::Scene scene =
         benchmark::makeBlockScene("sorting", ElementType::Quad4, 10, 8, PhaseModel::Saturated);
-    benchmark::shufflePoints(scene.points);
+    if (shuffle) benchmark::shufflePoints(scene.points);
     ExplicitTwoPhaseSolver solver(scene.mesh, scene.points, scene.materials);
     solver.setSortInterval(sort_interval);
+    solver.setReproducibleSums(reproducible);
     solver.beginStage(scene.stage);
     for (int k = 0; k < 30; ++k) solver.step(solver.chooseTimeStep().time_step);
     profile = solver.profile();
@@ -224,6 +226,25 @@ void checkSorting() {
   // Round-off amplified by K_L / E ~ 200 over 30 steps: far below 1e-8.
   expectNear("sorting: pressures equal to round-off", pressure_diff / pressure_scale, 0, 1e-8);
   expectNear("sorting: stresses equal to round-off", stress_diff / stress_scale, 0, 1e-8);
+
+  // Reproducible sums: seeded or shuffled, sorted or not, the same results bit for bit.
+  const MaterialPoints seeded = run(0, unsorted_profile, unsorted_choice, false, true);
+  const MaterialPoints mixed = run(5, sorted_profile, sorted_choice, true, true);
+  const auto id_seeded = host(seeded.id), id_mixed = host(mixed.id);
+  std::vector<int> seeded_index(seeded.count);
+  for (int p = 0; p < seeded.count; ++p) seeded_index.at(id_seeded(p)) = p;
+  const auto pressure_a = host(seeded.pressure_liquid), pressure_b = host(mixed.pressure_liquid);
+  const auto stress_a = host(seeded.stress_effective), stress_b = host(mixed.stress_effective);
+  const auto position_a = host(seeded.position), position_b = host(mixed.position);
+  bool identical = seeded.count == mixed.count;
+  for (int p = 0; p < mixed.count && identical; ++p) {
+    const int q = seeded_index.at(id_mixed(p));
+    identical = pressure_b(p) == pressure_a(q) && position_b(p, 0) == position_a(q, 0) &&
+                position_b(p, 1) == position_a(q, 1);
+    for (int c = 0; c < kStressComponents; ++c)
+      identical = identical && stress_b(p, c) == stress_a(q, c);
+  }
+  expect("reproducible sums: shuffled and sorted = seeded, bit for bit", identical);
 }
 
 }  // namespace

@@ -325,6 +325,13 @@ struct GuardsSpec {
   Real kinetic_energy_bound = 0.1;
 };
 
+/// How a run over MPI ranks adds up (P7; doc/parallel.md).
+struct ParallelSpec {
+  /// Compensated node sums (transfer/CompensatedSum.hpp): results independent of the number
+  /// of ranks and of the points' order, also through local damping; ~2x in the P2G kernels.
+  bool reproducible_sums = false;
+};
+
 struct Deck {
   std::string path;  ///< the deck file (absolute)
   std::string title;
@@ -335,6 +342,7 @@ struct Deck {
   InitialisationSpec initialisation;  ///< (P4)
   ProbesSpec probes;                  ///< (P4)
   GuardsSpec guards;                  ///< (P8)
+  ParallelSpec parallel;              ///< (P7)
 };
 
 }  // namespace argine

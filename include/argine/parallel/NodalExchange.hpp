@@ -65,10 +65,19 @@ class NodalExchange {
   void sum(std::initializer_list<NodalFieldRef> fields);
   /// Same for the fields of a vector.
   void sum(const std::vector<NodalFieldRef>& fields);
+  /// Compensated sums (transfer/CompensatedSum.hpp): field k of `hi` with its low part, field
+  /// k of `lo` (same shape). Each rank's (hi, lo) is added in ascending rank order with
+  /// TwoSum; both parts are replaced. Fold them (hi + lo) afterwards. Collective.
+  void sumCompensated(std::initializer_list<NodalFieldRef> hi,
+                      std::initializer_list<NodalFieldRef> lo);
 
   const ExchangeTraffic& traffic() const { return traffic_; }
 
  private:
+  /// Sends and receives `fields` at the shared nodes and adds the partial values; the first
+  /// `compensated_width` values per node are compensated pairs' high parts (see above).
+  void exchange(const std::vector<NodalFieldRef>& fields, int compensated_width);
+
   const RankDecomposition& decomposition_;
   std::vector<NodalFieldRef> fields_;
   std::vector<Real> own_;                          ///< own partial values, [slot][component]

@@ -30,12 +30,17 @@ struct TimeStepChoice;
 
 /// Completes the P2G of mapPointsToGrid at the shared nodes: masses, drag, liquid volume,
 /// momenta and forces, in one message per neighbour.
-void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& grid);
+/// With `compensation` (reproducible sums) the compensated pairs (grid, compensation) are
+/// added (NodalExchange::sumCompensated); they still need folding.
+void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& grid,
+                          GridFields* compensation = nullptr);
 /// Completes the remapped momenta (updatePointVelocitiesAndMapMomenta) at the shared nodes.
-void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& grid);
+void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& grid,
+                             GridFields* compensation = nullptr);
 /// Completes mapBoundaryGradients at the shared nodes (mass gradient, flux weights, wet
 /// volume).
-void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& fields);
+void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& fields,
+                                       BoundaryGradientFields* compensation = nullptr);
 
 /// Everything the end of a step sums over the ranks, in ONE Allreduce: the point totals of
 /// the state update, the kinetic totals of the velocity update, and the relocation counts

@@ -181,6 +181,15 @@ class ExplicitTwoPhaseSolver {
   void setSortInterval(int steps) { sort_interval_ = steps > 0 ? steps : 0; }
   /// Steps between two sorts of the points (0: never).
   int sortInterval() const { return sort_interval_; }
+
+  /// Reproducible sums (deck `Parallel: {Reproducible Sums: true}`, transfer/CompensatedSum.hpp):
+  /// every node sum that feeds the state (P2G, momentum remap, hydraulic boundary gradients,
+  /// volumetric averaging, head stabilisation) is compensated and rounded once complete, so
+  /// the result does not depend on the number of MPI ranks or on the order of the points
+  /// (except with a probability of order 1e-14 per sum; the outflow limit keeps plain sums).
+  /// Costs about 2x in those kernels. Off by default.
+  void setReproducibleSums(bool on);
+  bool reproducibleSums() const { return reproducible_sums_; }
   /// Rarely enough that sorting costs ~1 % of the steps, often enough that points mixed by
   /// large deformations are ordered again quickly (see verification/benchmark).
   static constexpr int kRecommendedSortInterval = 50;
@@ -254,6 +263,10 @@ class ExplicitTwoPhaseSolver {
   PointShapes shapes_;
   PointRates rates_;
   GridFields grid_;
+  bool reproducible_sums_ = false;
+  GridFields grid_lo_;                  ///< reproducible sums: low parts of grid_'s sums
+  BoundaryGradientFields boundary_lo_;  ///< ... and of boundary_fields_'
+  const GridFields* gridCompensation() const { return reproducible_sums_ ? &grid_lo_ : nullptr; }
   ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)

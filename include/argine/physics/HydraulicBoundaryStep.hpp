@@ -55,6 +55,11 @@ struct BoundaryGradientFields {
   void zero(const ActiveNodes& nodes);
 };
 
+/// Reproducible sums: mapBoundaryGradients' compensated sums, complete over the ranks,
+/// folded with their low parts at the listed nodes (transfer/CompensatedSum.hpp).
+void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientFields& fields,
+                                 BoundaryGradientFields& lo);
+
 /// The outward unit normal of a node from its mass gradient (4.51); zero when the gradient
 /// vanishes. Note the sign: sum_p m_p grad N_i(x_p) points OUT of the body at a boundary
 /// node (N_i grows towards its node, which lies on the surface), i.e. opposite to the
@@ -68,10 +73,12 @@ KOKKOS_INLINE_FUNCTION void outwardNormalOfMassGradient(const Real gradient[kDim
 
 /// P2G at t^k of the mass gradient, wet volume and flux weights; `grid` must hold the nodal
 /// liquid content of t^k (computeNodalVelocities). Zero `fields` on the active nodes first.
+/// With `compensation` (reproducible sums) compensated, as mapPointsToGrid.
 void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shapes,
                           const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                           const Kokkos::View<const int*, MemSpace>& liquid_m,
-                          const GridFields& grid, BoundaryGradientFields& fields);
+                          const GridFields& grid, BoundaryGradientFields& fields,
+                          const BoundaryGradientFields* compensation = nullptr);
 
 /// Adds the loads to f^ext and f_L^ext of the nodes that carry solid mass.
 void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);

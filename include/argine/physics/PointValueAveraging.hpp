@@ -25,14 +25,28 @@ constexpr int kAverageNone = 0;
 constexpr int kAverageElement = 1;
 constexpr int kAverageNodal = 2;
 
+/// Low parts of the averaging's sums for reproducible sums (transfer/CompensatedSum.hpp),
+/// shaped as the element and node sums; empty: plain sums.
+struct AveragingCompensation {
+  Kokkos::View<Real* [2], MemSpace> element_lo;
+  Kokkos::View<Real* [2], MemSpace> node_lo;
+  bool enabled() const { return node_lo.extent(0) > 0; }
+  /// Allocates both for `elements` and `nodes` (reproducible sums on), or empties them.
+  void allocate(bool on, int elements, int nodes) {
+    element_lo = Kokkos::View<Real* [2], MemSpace>("averaging_element_lo", on ? elements : 0);
+    node_lo = Kokkos::View<Real* [2], MemSpace>("averaging_node_lo", on ? nodes : 0);
+  }
+};
+
 /// Replaces value(p) by its element or nodal average (file comment of the header) at the
 /// points with mode(p) != none; weight(p) > 0 there. Elements and nodes see only the points
-/// of the same mode.
+/// of the same mode. With `compensation` enabled the sums are compensated (and exchanged so).
 void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
                         const ActiveNodes& active, Kokkos::View<const int*, MemSpace> mode_p,
                         Kokkos::View<const Real*, MemSpace> weight_p,
                         Kokkos::View<Real*, MemSpace> value_p,
                         Kokkos::View<Real* [2], MemSpace> element_sums,
-                        Kokkos::View<Real* [2], MemSpace> node_sums, NodalExchange* exchange);
+                        Kokkos::View<Real* [2], MemSpace> node_sums, NodalExchange* exchange,
+                        const AveragingCompensation& compensation = {});
 
 }  // namespace argine

@@ -26,6 +26,7 @@
 /// order in d p_L / K_L.
 
 #include "argine/core/Types.hpp"
+#include "argine/physics/PointValueAveraging.hpp"
 
 namespace argine {
 
@@ -62,10 +63,17 @@ class VolumetricAveraging {
   void averagePressureIncrements(const MaterialTable& table, const MaterialPoints& points,
                                  const PointShapes& shapes, const ActiveNodes& active);
 
+  /// Reproducible sums (transfer/CompensatedSum.hpp): the node and element sums compensated.
+  void compensateSums(bool on) {
+    compensation_.allocate(on, static_cast<int>(element_sums_.extent(0)),
+                           static_cast<int>(node_sums_.extent(0)));
+  }
+
  private:
   bool strain_ = false;
   bool pressure_ = false;
   NodalExchange* exchange_ = nullptr;               ///< several ranks: completes the node sums
+  AveragingCompensation compensation_;              ///< reproducible sums: the low parts
   Kokkos::View<Real*, MemSpace> value_point_;       ///< per point: the quantity, then its average
   Kokkos::View<Real*, MemSpace> weight_point_;      ///< per point: its weight (0: not averaged)
   Kokkos::View<int*, MemSpace> mode_point_;         ///< per point: IncrementAveraging as int

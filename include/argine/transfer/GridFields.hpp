@@ -52,4 +52,11 @@ struct GridFields {
   void zero(const ActiveNodes& nodes);
 };
 
+/// Reproducible sums (CompensatedSum.hpp): the P2G sums of mapPointsToGrid (masses, drag,
+/// liquid volume, momenta, forces), complete over the ranks, folded with their low parts
+/// `lo` at the listed nodes (lo = 0 after).
+void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& grid, GridFields& lo);
+/// The same for the momenta alone (the remap of updatePointVelocitiesAndMapMomenta).
+void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& grid, GridFields& lo);
+
 }  // namespace argine

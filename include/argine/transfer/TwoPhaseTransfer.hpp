@@ -30,9 +30,12 @@ using LiquidCarrying = Kokkos::View<const int*, MemSpace>;
 /// M~_L (4.38-4.40), lumped drag Q_L (4.45, k from the point's conductivity and
 /// g = 9.81 m/s^2, the g that defines k), momenta, internal forces (4.43, 4.44) and gravity
 /// (4.41, 4.42; `gravity` in m/s^2 acting in -y). Boundary loads are added afterwards by the
-/// boundary conditions. The grid must be zero on the nodes the points touch.
+/// boundary conditions. The grid must be zero on the nodes the points touch. With
+/// `compensation` (reproducible sums, CompensatedSum.hpp) the sums are compensated, their low
+/// parts in the same fields of `compensation` (zero there too), to be folded once complete.
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
-                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid);
+                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid,
+                     const GridFields* compensation = nullptr);
 
 /// Nodal velocities v = momentum / mass and the nodal liquid content rho_L n S_L =
 /// M_L / (sum N V) (4.16) on the active nodes. A node without liquid mass gets v_L = v_S.
@@ -69,12 +72,15 @@ struct VelocityBlend {
 /// solid velocity against its points' FLIP velocity would otherwise feed the difference into
 /// the liquid's relative velocity every step); and the P2G of the updated momenta
 /// sum N M_S v_S and sum N rho_L V v_L into the (first zeroed) nodal momenta of the active
-/// nodes. Call computeNodalVelocities next. Returns the kinetic energies of the new velocities.
+/// nodes (compensated as mapPointsToGrid with `compensation`, whose momenta must be zero on
+/// the active nodes). Call computeNodalVelocities next (after folding, when compensated).
+/// Returns the kinetic energies of the new velocities.
 KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  const LiquidCarrying& liquid_m,
                                                  const ActiveNodes& active, Real dt,
                                                  VelocityBlend blend, MaterialPoints& points,
-                                                 GridFields& grid);
+                                                 GridFields& grid,
+                                                 const GridFields* compensation = nullptr);
 
 /// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
 /// spin increment dt skew(grad v_S) (the Jaumann rotation, ObjectiveStressRate.hpp),
