@@ -35,12 +35,8 @@ TEST(ElementBisection, SplitsARowByWeight) {
   EXPECT_EQ(bisectElements(y, x, {1, 1, 1, 1}, 2), (std::vector<int>{0, 0, 1, 1}));
 }
 
-TEST(RankDecomposition, SharedNodesSumOverRanks) {
-  // 8 x 2 quads of 1 m: with equal weights each rank owns a block of columns. Every rank
-  // adds (rank + 1) at each node of its elements; after the exchange a node's value is the
-  // sum of (r + 1) over the ranks r whose elements touch it, counted from the partition.
-  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
-  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+/// For every node, the ranks whose elements touch it (each once).
+std::vector<std::vector<int>> ranksTouchingNodes(const Mesh& mesh, const RankDecomposition& ranks) {
   const auto& owner = ranks.elementOwners();
   const auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
   std::vector<std::vector<int>> touching(mesh.numNodes());
@@ -49,6 +45,16 @@ TEST(RankDecomposition, SharedNodesSumOverRanks) {
       auto& list = touching[C(e, a)];
       if (std::find(list.begin(), list.end(), owner[e]) == list.end()) list.push_back(owner[e]);
     }
+  return touching;
+}
+
+TEST(RankDecomposition, SharedNodesSumOverRanks) {
+  // 8 x 2 quads of 1 m: with equal weights each rank owns a block of columns. Every rank
+  // adds (rank + 1) at each node of its elements; after the exchange a node's value is the
+  // sum of (r + 1) over the ranks r whose elements touch it, counted from the partition.
+  const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  const std::vector<std::vector<int>> touching = ranksTouchingNodes(mesh, ranks);
   Kokkos::View<Real*, MemSpace> scalar("scalar", mesh.numNodes());
   Kokkos::View<Real* [2], MemSpace> vector("vector", mesh.numNodes());
   for (int i = 0; i < mesh.numNodes(); ++i)
@@ -89,14 +95,7 @@ TEST(RankDecomposition, CompensatedSumsAtSharedNodesKeepWhatPlainSumsLose) {
   // have lost the small terms already, the compensated exchange keeps them.
   const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
   const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
-  const auto& owner = ranks.elementOwners();
-  const auto C = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
-  std::vector<std::vector<int>> touching(mesh.numNodes());
-  for (int e = 0; e < mesh.numElements(); ++e)
-    for (int a = 0; a < 4; ++a) {
-      auto& list = touching[C(e, a)];
-      if (std::find(list.begin(), list.end(), owner[e]) == list.end()) list.push_back(owner[e]);
-    }
+  const std::vector<std::vector<int>> touching = ranksTouchingNodes(mesh, ranks);
   Kokkos::View<Real*, MemSpace> hi("hi", mesh.numNodes()), lo("lo", mesh.numNodes());
   const int me = ranks.rank();
   for (int i = 0; i < mesh.numNodes(); ++i)
