@@ -7,6 +7,7 @@
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/TimeStepControl.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
 
@@ -70,6 +71,25 @@ void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
   MPI_Allreduce(MPI_IN_PLACE, scratch.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
   for (std::size_t k = 0; k < kFixed; ++k) *fixed[k] = scratch[k];
   std::copy(scratch.begin() + kFixed, scratch.begin() + n, also.begin());
+}
+
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo) {
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const std::size_t n = hi.size();
+  std::vector<Real> mine(2 * n), all(2 * n * static_cast<std::size_t>(ranks));
+  std::copy(hi.begin(), hi.end(), mine.begin());
+  std::copy(lo.begin(), lo.end(), mine.begin() + n);
+  MPI_Allgather(mine.data(), static_cast<int>(2 * n), MPI_DOUBLE, all.data(),
+                static_cast<int>(2 * n), MPI_DOUBLE, comm);
+  for (std::size_t k = 0; k < n; ++k) {
+    CompensatedReal total;
+    for (int r = 0; r < ranks; ++r) {
+      const Real* theirs = &all[2 * n * static_cast<std::size_t>(r)];
+      total.add(CompensatedReal{theirs[k], theirs[n + k]});
+    }
+    hi[k] = total.value();
+  }
 }
 
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values) {

@@ -289,9 +289,12 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
   const std::vector<Real> masses = boundaryFluxMasses(
       hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, boundary_fields_,
-      grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>());
+      grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>(),
+      reproducible_sums_ ? &flux_mass_lo_ : nullptr);
+  if (reproducible_sums_) flux_mass_hi_ = masses;  // combined over the ranks at the step's end
   for (int c = 0; c <= conditions; ++c)
-    boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
+    boundary_flux_volumes_[c] =
+        (reproducible_sums_ ? masses[c] + flux_mass_lo_[c] : masses[c]) / reference_liquid_density_;
 }
 
 void ExplicitTwoPhaseSolver::solveLiquidMomentum() {
@@ -314,7 +317,15 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
                                          velocity_blend_, points_, grid_, gridCompensation());
   if (exchange_)  // (kinetic_: end of step)
     sumMomentaAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
-  if (reproducible_sums_) foldCompensatedMomenta(nodes_in_use_, grid_, grid_lo_);
+  if (reproducible_sums_) {
+    foldCompensatedMomenta(nodes_in_use_, grid_, grid_lo_);
+    // the run totals too: the kernel's energies again, compensated (same terms)
+    kinetic_pairs_ = compensatedKineticEnergies(
+        points_.element, points_.material, table_.liquidCarrying(), points_.mass_solid,
+        points_.mass_liquid, points_.velocity_solid, points_.velocity_liquid);
+    kinetic_.solid = kinetic_pairs_.solid.value();
+    kinetic_.liquid = kinetic_pairs_.liquid.value();
+  }
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {
@@ -347,6 +358,10 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
 void ExplicitTwoPhaseSolver::updatePointStates() {
   averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
   totals_ = argine::updatePointStates(table_, rates_, points_, momentum_.liquid_with_solid);
+  if (reproducible_sums_) {  // the liquid mass of the step, compensated (same terms)
+    liquid_mass_pair_ = compensatedSum(points_.mass_liquid);
+    totals_.liquid_mass = liquid_mass_pair_.value();
+  }
   // ---- Locking mitigation: smoothed d p_L at saturated points (no-op unless asked).
   averaging_.averagePressureIncrements(table_, points_, shapes_, nodes_in_use_);
 }
@@ -366,6 +381,20 @@ void ExplicitTwoPhaseSolver::relocatePoints() {
     sums.changed_element = counts.changed_element;
     sums.emigrants = countEmigrants(*ranks_, points_);
     sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, reduction_scratch_);
+    if (reproducible_sums_) {  // the totals again, from the ranks' compensated pairs
+      std::vector<Real> hi{kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi};
+      std::vector<Real> lo{kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo};
+      if (!hydraulic_.empty()) {
+        hi.insert(hi.end(), flux_mass_hi_.begin(), flux_mass_hi_.end());
+        lo.insert(lo.end(), flux_mass_lo_.begin(), flux_mass_lo_.end());
+      }
+      sumCompensatedOverRanks(ranks_->comm(), hi, lo);
+      sums.kinetic_solid = hi[0];
+      sums.kinetic_liquid = hi[1];
+      sums.liquid_mass = hi[2];
+      for (std::size_t c = 3; c < hi.size(); ++c)
+        boundary_flux_volumes_[c - 3] = hi[c] / reference_liquid_density_;
+    }
     kinetic_.solid = sums.kinetic_solid;
     kinetic_.liquid = sums.kinetic_liquid;
     kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);

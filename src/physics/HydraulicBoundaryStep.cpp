@@ -235,7 +235,8 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
                                      const ActiveNodes& active,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
-                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned) {
+                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned,
+                                     std::vector<Real>* compensation) {
   std::vector<Real> masses(conditions + 1, 0.0);
   const auto weight_i = fields.flux_weight_i;
   const auto vl_i = grid.velocity_liquid_i;
@@ -248,6 +249,20 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
   const auto owned = ownership.node;
   const auto owner = ownership.owner;
   const bool masked = rank_owned.extent(0) > 0;
+  const auto nodes = active.nodes();
+  if (compensation) {  // reproducible sums: the same terms, compensated, in one order (host)
+    std::vector<CompensatedReal> sums(conditions + 1);
+    for (int j = 0; j < ownership.count(); ++j)
+      if (owner(j) >= 0 && owner(j) < conditions && (!masked || rank_owned(owned(j))))
+        sums[owner(j)].add(inflow(owned(j)));
+    for (int j = 0; j < active.count(); ++j) sums[conditions].add(inflow(nodes(j)));
+    compensation->resize(conditions + 1);
+    for (int c = 0; c <= conditions; ++c) {
+      masses[c] = sums[c].hi;
+      (*compensation)[c] = sums[c].lo;
+    }
+    return masses;
+  }
   for (int c = 0; c < conditions; ++c) {
     Real sum = 0;
     Kokkos::parallel_reduce(
@@ -258,7 +273,6 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
         sum);
     masses[c] = sum;
   }
-  const auto nodes = active.nodes();
   Real total = 0;
   Kokkos::parallel_reduce(
       "boundary_flux_total", Kokkos::RangePolicy<ExecSpace>(0, active.count()),

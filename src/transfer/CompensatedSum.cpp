@@ -46,4 +46,34 @@ void zeroCompensation(const ActiveNodes& active, Kokkos::View<Real* [kDim], MemS
       });
 }
 
+CompensatedKinetic compensatedKineticEnergies(
+    Kokkos::View<const int*, MemSpace> element_p, Kokkos::View<const int*, MemSpace> material_p,
+    Kokkos::View<const int*, MemSpace> liquid_m, Kokkos::View<const Real*, MemSpace> mass_solid_p,
+    Kokkos::View<const Real*, MemSpace> mass_liquid_p,
+    Kokkos::View<const Real* [kDim], MemSpace> v_solid_p,
+    Kokkos::View<const Real* [kDim], MemSpace> v_liquid_p) {
+  // Sequential on the host (Serial): a compensated sum is added in one order.
+  static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
+                "compensated totals are summed on the host");
+  CompensatedKinetic totals;
+  const int count = static_cast<int>(element_p.extent(0));
+  for (int p = 0; p < count; ++p) {
+    if (element_p(p) < 0) continue;
+    const Real vsx = v_solid_p(p, 0), vsy = v_solid_p(p, 1);
+    totals.solid.add(0.5 * mass_solid_p(p) * (vsx * vsx + vsy * vsy));
+    if (liquid_m(material_p(p)) == 0) continue;
+    const Real vlx = v_liquid_p(p, 0), vly = v_liquid_p(p, 1);
+    totals.liquid.add(0.5 * mass_liquid_p(p) * (vlx * vlx + vly * vly));
+  }
+  return totals;
+}
+
+CompensatedReal compensatedSum(Kokkos::View<const Real*, MemSpace> values) {
+  static_assert(Kokkos::SpaceAccessibility<Kokkos::HostSpace, MemSpace>::accessible,
+                "compensated totals are summed on the host");
+  CompensatedReal sum;
+  for (std::size_t p = 0; p < values.extent(0); ++p) sum.add(values(p));
+  return sum;
+}
+
 }  // namespace argine

@@ -54,6 +54,10 @@ struct EndOfStepSums {
 /// the ranks in one Allreduce, through `scratch` (grown, never shrunk: no allocation per step).
 void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
                   std::vector<Real>& scratch);
+/// Reproducible sums: entry k of every rank's compensated value (hi[k], lo[k]) added in rank
+/// order with TwoSum (transfer/CompensatedSum.hpp) and rounded once, into hi[k] on every
+/// rank (lo unchanged). Collective (one Allgather of both vectors).
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo);
 /// Element-wise sum of `values` over the ranks (in place).
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);
 long long sumOverRanks(MPI_Comm comm, long long value);

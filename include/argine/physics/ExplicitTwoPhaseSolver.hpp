@@ -76,6 +76,7 @@
 #include "argine/physics/VolumetricAveraging.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/AffineElementMaps.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
@@ -184,10 +185,11 @@ class ExplicitTwoPhaseSolver {
 
   /// Reproducible sums (deck `Parallel: {Reproducible Sums: true}`, transfer/CompensatedSum.hpp):
   /// every node sum that feeds the state (P2G, momentum remap, hydraulic boundary gradients,
-  /// volumetric averaging, head stabilisation) is compensated and rounded once complete, so
-  /// the result does not depend on the number of MPI ranks or on the order of the points
-  /// (except with a probability of order 1e-14 per sum; the outflow limit keeps plain sums).
-  /// Costs about 2x in those kernels. Off by default.
+  /// volumetric averaging, head stabilisation) and the run totals (energies, liquid mass,
+  /// boundary fluxes) are compensated and rounded once complete, so the results do not
+  /// depend on the number of MPI ranks or on the order of the points (except with a
+  /// probability of order 1e-14 per sum; the outflow limit keeps plain sums). Costs about
+  /// 2x in those kernels. Off by default.
   void setReproducibleSums(bool on);
   bool reproducibleSums() const { return reproducible_sums_; }
   /// Rarely enough that sorting costs ~1 % of the steps, often enough that points mixed by
@@ -267,6 +269,11 @@ class ExplicitTwoPhaseSolver {
   GridFields grid_lo_;                  ///< reproducible sums: low parts of grid_'s sums
   BoundaryGradientFields boundary_lo_;  ///< ... and of boundary_fields_'
   const GridFields* gridCompensation() const { return reproducible_sums_ ? &grid_lo_ : nullptr; }
+  // Reproducible sums: this rank's run totals as compensated pairs, combined over the ranks
+  // at the end of the step (sumCompensatedOverRanks).
+  CompensatedKinetic kinetic_pairs_;
+  CompensatedReal liquid_mass_pair_;
+  std::vector<Real> flux_mass_hi_, flux_mass_lo_;  ///< per hydraulic condition, then the total
   ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)

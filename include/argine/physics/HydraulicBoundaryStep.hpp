@@ -104,10 +104,13 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 /// is the same sum over ALL active nodes (= the change of the points' liquid mass).
 /// `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the condition sums then
 /// count only those (each node on one rank), as `active` does for the total. Empty: all.
+/// With `compensation` (reproducible sums) each entry is a compensated sum: its high part
+/// returned, its low part in (*compensation)[entry].
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
-                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned = {});
+                                     Kokkos::View<const unsigned char*, MemSpace> rank_owned = {},
+                                     std::vector<Real>* compensation = nullptr);
 
 }  // namespace argine

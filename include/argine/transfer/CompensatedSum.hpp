@@ -33,6 +33,20 @@ KOKKOS_INLINE_FUNCTION void addCompensated(Real& hi, Real& lo, Real v) {
   lo += error;
 }
 
+/// A compensated running sum as a value (a point total: kinetic energy, liquid mass).
+struct CompensatedReal {
+  Real hi = 0;
+  Real lo = 0;
+  KOKKOS_INLINE_FUNCTION void add(Real v) { addCompensated(hi, lo, v); }
+  /// Another compensated sum: its hi by TwoSum, its lo as it is (the nodal exchange's rule).
+  KOKKOS_INLINE_FUNCTION void add(const CompensatedReal& other) {
+    addCompensated(hi, lo, other.hi);
+    lo += other.lo;
+  }
+  /// The sum rounded once.
+  KOKKOS_INLINE_FUNCTION Real value() const { return hi + lo; }
+};
+
 /// Node i of a scalar nodal sum += v: through the ScatterView access, or compensated into
 /// (hi(i), lo(i)).
 template <bool kCompensated, class Access, class Hi, class Lo>
@@ -53,6 +67,22 @@ KOKKOS_FORCEINLINE_FUNCTION void addToNode(Access& access, const Hi& hi, const L
   else
     access(i, d) += v;
 }
+
+/// Sums of this rank's points, compensated (reproducible sums: the run totals). Kinetic
+/// energies 1/2 M_S |v_S|^2 and, at liquid-carrying points (liquid(material) != 0),
+/// 1/2 M_L |v_L|^2, over the located points (element >= 0), with the same terms as the
+/// velocity update's own sums.
+struct CompensatedKinetic {
+  CompensatedReal solid, liquid;
+};
+CompensatedKinetic compensatedKineticEnergies(
+    Kokkos::View<const int*, MemSpace> element_p, Kokkos::View<const int*, MemSpace> material_p,
+    Kokkos::View<const int*, MemSpace> liquid_m, Kokkos::View<const Real*, MemSpace> mass_solid_p,
+    Kokkos::View<const Real*, MemSpace> mass_liquid_p,
+    Kokkos::View<const Real* [kDim], MemSpace> v_solid_p,
+    Kokkos::View<const Real* [kDim], MemSpace> v_liquid_p);
+/// sum over all points of `values` (e.g. M_L), compensated.
+CompensatedReal compensatedSum(Kokkos::View<const Real*, MemSpace> values);
 
 /// hi = fl(hi + lo), lo = 0 at the listed nodes: the compensated sums, complete, rounded once.
 void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real*, MemSpace> hi,
