@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <type_traits>
 
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
@@ -155,6 +157,10 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
 }
 
 void ExplicitTwoPhaseSolver::setReproducibleSums(bool on) {
+  // A compensated sum is added in one order: the kernels write hi and lo directly, which is
+  // race-free on Kokkos Serial only (a threaded port needs per-thread pairs, combined in order).
+  if (on && !std::is_same_v<ExecSpace, Kokkos::Serial>)
+    throw std::logic_error("reproducible sums need the Kokkos Serial execution space");
   reproducible_sums_ = on;
   const int nodes = on ? mesh_.numNodes() : 0;
   if (grid_lo_.numNodes() != nodes) grid_lo_.allocate(nodes);
