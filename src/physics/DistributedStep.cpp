@@ -73,15 +73,20 @@ void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
   std::copy(scratch.begin() + kFixed, scratch.begin() + n, also.begin());
 }
 
-void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo) {
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo,
+                             std::vector<Real>& scratch) {
   int ranks = 1;
   MPI_Comm_size(comm, &ranks);
   const std::size_t n = hi.size();
-  std::vector<Real> mine(2 * n), all(2 * n * static_cast<std::size_t>(ranks));
-  std::copy(hi.begin(), hi.end(), mine.begin());
-  std::copy(lo.begin(), lo.end(), mine.begin() + n);
-  MPI_Allgather(mine.data(), static_cast<int>(2 * n), MPI_DOUBLE, all.data(),
-                static_cast<int>(2 * n), MPI_DOUBLE, comm);
+  // scratch = [this rank's hi, lo | every rank's hi, lo]
+  const std::size_t needed = 2 * n * (1 + static_cast<std::size_t>(ranks));
+  if (scratch.size() < needed) scratch.resize(needed);
+  Real* mine = scratch.data();
+  Real* all = mine + 2 * n;
+  std::copy(hi.begin(), hi.end(), mine);
+  std::copy(lo.begin(), lo.end(), mine + n);
+  MPI_Allgather(mine, static_cast<int>(2 * n), MPI_DOUBLE, all, static_cast<int>(2 * n), MPI_DOUBLE,
+                comm);
   for (std::size_t k = 0; k < n; ++k) {
     CompensatedReal total;
     for (int r = 0; r < ranks; ++r) {

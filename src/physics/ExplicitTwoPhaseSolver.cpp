@@ -387,14 +387,16 @@ void ExplicitTwoPhaseSolver::relocatePoints() {
     sums.changed_element = counts.changed_element;
     sums.emigrants = countEmigrants(*ranks_, points_);
     sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, reduction_scratch_);
-    if (reproducible_sums_) {  // the totals again, from the ranks' compensated pairs
-      std::vector<Real> hi{kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi};
-      std::vector<Real> lo{kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo};
+    if (reproducible_sums_) {              // the totals again, from the ranks' compensated pairs
+      std::vector<Real>& hi = totals_hi_;  // members: no allocation per step
+      std::vector<Real>& lo = totals_lo_;
+      hi.assign({kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi});
+      lo.assign({kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo});
       if (!hydraulic_.empty()) {
         hi.insert(hi.end(), flux_mass_hi_.begin(), flux_mass_hi_.end());
         lo.insert(lo.end(), flux_mass_lo_.begin(), flux_mass_lo_.end());
       }
-      sumCompensatedOverRanks(ranks_->comm(), hi, lo);
+      sumCompensatedOverRanks(ranks_->comm(), hi, lo, reduction_scratch_);
       sums.kinetic_solid = hi[0];
       sums.kinetic_liquid = hi[1];
       sums.liquid_mass = hi[2];

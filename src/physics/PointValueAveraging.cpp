@@ -75,9 +75,7 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
         node_sums(active_nodes(j), 0) = 0;
         node_sums(active_nodes(j), 1) = 0;
       });
-  if (compensated) {
-    Kokkos::deep_copy(compensation.element_lo, 0.0);
-    zeroCompensation(active, compensation.node_lo);
+  if (compensated) {  // lo is zero: the last call folded it (below)
     scatterAverageSums<true>(points, shapes, mode_p, weight_p, value_p, element_sums, node_sums,
                              compensation.element_lo, compensation.node_lo);
   } else {
@@ -94,7 +92,10 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
     Kokkos::parallel_for(
         "averaging_fold_elements", Kokkos::RangePolicy<ExecSpace>(0, element_sums.extent(0)),
         KOKKOS_LAMBDA(const int e) {
-          for (int c = 0; c < 2; ++c) element_sums(e, c) += element_lo(e, c);
+          for (int c = 0; c < 2; ++c) {
+            element_sums(e, c) += element_lo(e, c);
+            element_lo(e, c) = 0;
+          }
         });
   } else if (exchange) {
     exchange->sum({nodalField(node_sums)});

@@ -30,22 +30,6 @@ void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real* [kDim], M
       });
 }
 
-void zeroCompensation(const ActiveNodes& active, Kokkos::View<Real*, MemSpace> lo) {
-  const auto nodes = active.nodes();
-  Kokkos::parallel_for(
-      "zero_compensation", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j) { lo(nodes(j)) = 0; });
-}
-
-void zeroCompensation(const ActiveNodes& active, Kokkos::View<Real* [kDim], MemSpace> lo) {
-  const auto nodes = active.nodes();
-  Kokkos::parallel_for(
-      "zero_compensation", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j) {
-        for (int d = 0; d < kDim; ++d) lo(nodes(j), d) = 0;
-      });
-}
-
 CompensatedKinetic compensatedKineticEnergies(
     Kokkos::View<const int*, MemSpace> element_p, Kokkos::View<const int*, MemSpace> material_p,
     Kokkos::View<const int*, MemSpace> liquid_m, Kokkos::View<const Real*, MemSpace> mass_solid_p,

@@ -56,8 +56,10 @@ void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
                   std::vector<Real>& scratch);
 /// Reproducible sums: entry k of every rank's compensated value (hi[k], lo[k]) added in rank
 /// order with TwoSum (transfer/CompensatedSum.hpp) and rounded once, into hi[k] on every
-/// rank (lo unchanged). Collective (one Allgather of both vectors).
-void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo);
+/// rank (lo unchanged). Collective (one Allgather of both vectors, through `scratch`: grown,
+/// never shrunk).
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo,
+                             std::vector<Real>& scratch);
 /// Element-wise sum of `values` over the ranks (in place).
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);
 long long sumOverRanks(MPI_Comm comm, long long value);

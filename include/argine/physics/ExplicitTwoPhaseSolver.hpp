@@ -274,6 +274,7 @@ class ExplicitTwoPhaseSolver {
   CompensatedKinetic kinetic_pairs_;
   CompensatedReal liquid_mass_pair_;
   std::vector<Real> flux_mass_hi_, flux_mass_lo_;  ///< per hydraulic condition, then the total
+  std::vector<Real> totals_hi_, totals_lo_;        ///< the pairs sent at the end of a step
   ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)

@@ -85,12 +85,11 @@ CompensatedKinetic compensatedKineticEnergies(
 CompensatedReal compensatedSum(Kokkos::View<const Real*, MemSpace> values);
 
 /// hi = fl(hi + lo), lo = 0 at the listed nodes: the compensated sums, complete, rounded once.
+/// Folding after every compensated P2G keeps lo zero everywhere for the next one (lo starts
+/// zero, and a P2G touches active nodes only).
 void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real*, MemSpace> hi,
                          Kokkos::View<Real*, MemSpace> lo);
 void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real* [kDim], MemSpace> hi,
                          Kokkos::View<Real* [kDim], MemSpace> lo);
-/// lo = 0 at the listed nodes (before a compensated P2G).
-void zeroCompensation(const ActiveNodes& nodes, Kokkos::View<Real*, MemSpace> lo);
-void zeroCompensation(const ActiveNodes& nodes, Kokkos::View<Real* [kDim], MemSpace> lo);
 
 }  // namespace argine
