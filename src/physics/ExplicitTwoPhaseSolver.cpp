@@ -219,7 +219,8 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   grid_.zero(nodes_in_use_);
   if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
   nodes_next_changed_ = false;
-  mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, grid_, gridCompensation());
+  mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, nodes_in_use_, node_records_,
+                  grid_, gridCompensation());
   if (exchange_)  // several ranks: complete the sums
     sumGridAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
   if (reproducible_sums_) foldCompensatedGridSums(nodes_in_use_, grid_, grid_lo_);
@@ -318,9 +319,9 @@ void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions() {
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),
   // and sums the kinetic energies, in the same pass over the points.
-  kinetic_ =
-      updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
-                                         velocity_blend_, points_, grid_, gridCompensation());
+  kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
+                                                velocity_blend_, points_, node_records_, grid_,
+                                                gridCompensation());
   if (exchange_)  // (kinetic_: end of step)
     sumMomentaAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
   if (reproducible_sums_) {
@@ -349,7 +350,8 @@ void ExplicitTwoPhaseSolver::updateNodalVelocities() {
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
-  interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), grid_, dt, rates_);
+  interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), nodes_in_use_, grid_,
+                               node_records_, dt, rates_);
   // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
   averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
   // ---- Against the Tri3 pressure checkerboard: a conservative head exchange (no-op unless a

@@ -9,6 +9,7 @@
 #include "argine/points/PointFields.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
@@ -56,6 +57,13 @@ void randomise(MaterialPoints& points, unsigned seed) {
   Kokkos::deep_copy(points.conductivity, conductivity);
 }
 
+/// The nodes of the elements holding `points` (what the transfer kernels work on).
+ActiveNodes activeNodesOf(const Mesh& mesh, const MaterialPoints& points) {
+  ActiveNodes active(mesh.numNodes());
+  active.rebuild(mesh, points);
+  return active;
+}
+
 Kokkos::View<const int*, MemSpace> liquidFlags() {
   Kokkos::View<int*, MemSpace> flags("liquid_m", 2);
   auto host = Kokkos::create_mirror_view(flags);
@@ -88,7 +96,8 @@ class TransferOnShape : public ::testing::TestWithParam<ElementType> {};
 
 TEST_P(TransferOnShape, P2GConservesMassAndMomentumExactly) {
   auto [mesh, points, shapes, grid] = randomScene(3, 4, 1.5, 2.0, GetParam(), 7);
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, grid);
+  NodeRecords records;
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, activeNodesOf(mesh, points), records, grid);
 
   // Sums over points (host)...
   const auto ms = hostCopy(points.mass_solid), ml = hostCopy(points.mass_liquid);
@@ -152,7 +161,9 @@ TEST_P(TransferOnShape, G2PReproducesLinearVelocityFieldAndItsGradient) {
 
   const Real dt = 0.01;
   PointRates rates;
-  interpolateVelocityGradients(points, shapes, liquidFlags(), grid, dt, rates);
+  NodeRecords records;
+  interpolateVelocityGradients(points, shapes, liquidFlags(), activeNodesOf(mesh, points), grid,
+                               records, dt, rates);
   const auto x = hostCopy(points.position);
   const auto du = hostCopy(rates.displacement_increment_p);
   const auto de = hostCopy(rates.strain_increment_p);
@@ -189,7 +200,8 @@ TEST_P(TransferOnShape, UniformStressAndPressureGiveNoForceAtInteriorNodes) {
   evaluatePointShapes(mesh, points, shapes);
   GridFields grid;
   grid.allocate(mesh.numNodes());
-  mapPointsToGrid(points, shapes, liquidFlags(), 0.0, grid);
+  NodeRecords records;
+  mapPointsToGrid(points, shapes, liquidFlags(), 0.0, activeNodesOf(mesh, points), records, grid);
   const auto fm = hostCopy(grid.force_mixture_i), fl = hostCopy(grid.force_liquid_i);
   Real sum[4] = {0, 0, 0, 0};
   for (int i = 0; i < mesh.numNodes(); ++i) {
@@ -250,7 +262,9 @@ TEST_P(TransferOnShape, VelocityBlendIsFlipAtZeroAndTakesTheGridVelocitiesAtOne)
                         Case{{0.3, 0.6}, "blend"}}) {
     Kokkos::deep_copy(points.velocity_solid, vs0);
     Kokkos::deep_copy(points.velocity_liquid, vl0);
-    updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, dt, c.blend, points, grid);
+    NodeRecords records;
+    updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, dt, c.blend, points, records,
+                                       grid);
     const auto vs = hostCopy(points.velocity_solid), vl = hostCopy(points.velocity_liquid);
     for (int p = 0; p < points.count; ++p)
       for (int d = 0; d < kDim; ++d) {
@@ -344,13 +358,15 @@ TEST_P(TransferOnShape, PicShareRemovesTheVelocityNoiseTheGridCannotSeeAndKeepsM
     for (int p = 0; p < points.count; ++p) sum += ms(p) * now(p, d);
     return sum;
   };
+  NodeRecords records;
   auto run = [&](VelocityBlend blend, int steps) {
     for (int n = 0; n < steps; ++n) {
       grid.zero(active);
-      mapPointsToGrid(points, shapes, liquidFlags(), 0.0, grid);
+      mapPointsToGrid(points, shapes, liquidFlags(), 0.0, active, records, grid);
       computeNodalVelocities(active, grid);
       Kokkos::deep_copy(grid.acceleration_solid_i, 0.0);
-      updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, 1e-3, blend, points, grid);
+      updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, 1e-3, blend, points,
+                                         records, grid);
     }
   };
   const Real noise0 = noise(), momentum0[kDim] = {momentum(0), momentum(1)};
@@ -371,9 +387,10 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
   for (GridFields* g : {&lo, &reversed_grid, &reversed_lo, &plain}) g->allocate(mesh.numNodes());
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, grid, &lo);
+  NodeRecords records;
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, active, records, grid, &lo);
   foldCompensatedGridSums(active, grid, lo);
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, plain);
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, active, records, plain);
 
   MaterialPoints reversed;  // the same points, last first
   reversed.allocate(points.count);
@@ -392,7 +409,8 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
   });
   PointShapes reversed_shapes;
   evaluatePointShapes(mesh, reversed, reversed_shapes);
-  mapPointsToGrid(reversed, reversed_shapes, liquidFlags(), 9.81, reversed_grid, &reversed_lo);
+  mapPointsToGrid(reversed, reversed_shapes, liquidFlags(), 9.81, active, records, reversed_grid,
+                  &reversed_lo);
   foldCompensatedGridSums(active, reversed_grid, reversed_lo);
 
   const auto a = hostCopy(grid.force_mixture_i), b = hostCopy(reversed_grid.force_mixture_i);
@@ -462,6 +480,55 @@ TEST(GridFields, ZeroClearsOnlyListedNodes) {
     EXPECT_EQ(m(i), 1.0);
     EXPECT_EQ(v(i, 0), 2.0);
   }
+}
+
+TEST(NodeRecords, SumsGoToTheirGridFieldsAtListedNodesAndAreZeroedThere) {
+  const Mesh mesh = test::rectangleMesh(2, 1, 2.0, 1.0, ElementType::Quad4);
+  MaterialPoints points = test::seedUniform(mesh);
+  Kokkos::deep_copy(points.element, 0);  // element 0: nodes 0, 1, 3, 4
+  const ActiveNodes active = activeNodesOf(mesh, points);
+  GridFields grid;
+  grid.allocate(mesh.numNodes());
+  Kokkos::deep_copy(grid.mass_solid_i, 0.5);
+  NodeRecords records;
+  records.allocate(mesh.numNodes());
+  auto sums = Kokkos::create_mirror_view(records.sums_i);
+  for (int i = 0; i < mesh.numNodes(); ++i)
+    for (int slot = 0; slot < kNodeSumRow; ++slot) sums(i, slot) = 100 * i + slot + 1;
+  Kokkos::deep_copy(records.sums_i, sums);
+  addNodeSumsToGrid(active, records, grid);
+  const auto ms = hostCopy(grid.mass_solid_i), drag = hostCopy(grid.drag_i);
+  const auto ps = hostCopy(grid.momentum_solid_i), fl = hostCopy(grid.force_liquid_i);
+  const auto after = hostCopy(records.sums_i);
+  for (const int i : {0, 1, 3, 4}) {
+    EXPECT_EQ(ms(i), 0.5 + 100 * i + kSumMassSolid + 1);  // added to what was there
+    EXPECT_EQ(drag(i), 100 * i + kSumDrag + 1);
+    EXPECT_EQ(ps(i, 1), 100 * i + kSumMomentumSolid + 2);
+    EXPECT_EQ(fl(i, 0), 100 * i + kSumForceLiquid + 1);
+    for (int slot = 0; slot < kSumSlotCount; ++slot) EXPECT_EQ(after(i, slot), 0.0);
+  }
+  for (const int i : {2, 5}) {  // not listed: neither added nor cleared
+    EXPECT_EQ(ms(i), 0.5);
+    EXPECT_EQ(after(i, kSumMassSolid), 100 * i + 1);
+  }
+
+  // G2P rows: each slot holds its field's value.
+  auto vs = Kokkos::create_mirror_view(grid.velocity_solid_i);
+  auto al = Kokkos::create_mirror_view(grid.acceleration_liquid_i);
+  for (int i = 0; i < mesh.numNodes(); ++i) vs(i, 0) = i + 0.25, vs(i, 1) = -i, al(i, 1) = 7 * i;
+  Kokkos::deep_copy(grid.velocity_solid_i, vs);
+  Kokkos::deep_copy(grid.acceleration_liquid_i, al);
+  Kokkos::deep_copy(grid.liquid_content_i, 990.0);
+  readVelocityUpdateValues(active, grid, records);
+  auto values = hostCopy(records.values_i);
+  EXPECT_EQ(values(4, kReadVelocitySolid), 4.25);
+  EXPECT_EQ(values(4, kReadVelocitySolid + 1), -4.0);
+  EXPECT_EQ(values(3, kReadAccelerationLiquid + 1), 21.0);
+  readStrainValues(active, grid, records);
+  values = hostCopy(records.values_i);
+  EXPECT_EQ(values(1, kReadStrainVelocitySolid), 1.25);
+  EXPECT_EQ(values(1, kReadStrainLiquidContent), 990.0);
+  EXPECT_EQ(values(2, kReadStrainLiquidContent), 0.0);  // not listed
 }
 
 }  // namespace

@@ -78,6 +78,7 @@
 #include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
@@ -265,6 +266,7 @@ class ExplicitTwoPhaseSolver {
   PointShapes shapes_;
   PointRates rates_;
   GridFields grid_;
+  NodeRecords node_records_;  ///< scratch of the transfer kernels (packed nodal rows)
   bool reproducible_sums_ = false;
   GridFields grid_lo_;                  ///< reproducible sums: low parts of grid_'s sums
   BoundaryGradientFields boundary_lo_;  ///< ... and of boundary_fields_'

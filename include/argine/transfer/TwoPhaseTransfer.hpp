@@ -1,9 +1,12 @@
 #pragma once
 /// @file TwoPhaseTransfer.hpp
 /// The particle <-> grid kernels of the explicit two-phase step (thesis Sec. 3.2-3.3).
-/// P2G kernels scatter with Kokkos::Experimental::ScatterView (plain adds on Serial,
-/// duplicated on OpenMP, atomics on CUDA); G2P kernels read plain Views. Every kernel is a
-/// template on the element's node count, chosen once per call from PointShapes::type.
+/// P2G kernels scatter into the packed rows of NodeRecords with
+/// Kokkos::Experimental::ScatterView (plain adds on Serial, duplicated on OpenMP, atomics on
+/// CUDA) and add them to GridFields at the active nodes; G2P kernels read packed rows filled
+/// from GridFields at the active nodes (NodeRecords.hpp: why). The active nodes must include
+/// every node of every element holding a point. Every kernel is a template on the element's
+/// node count, chosen once per call from PointShapes::type.
 ///
 /// Dry points (their material carries no liquid, `liquid_m(material) == 0`) add nothing to
 /// the liquid fields, so a node touched only by dry points has no liquid mass and the
@@ -18,6 +21,7 @@ namespace argine {
 
 class ActiveNodes;
 struct GridFields;
+struct NodeRecords;
 struct MaterialPoints;
 struct PointRates;
 struct PointShapes;
@@ -34,7 +38,8 @@ using LiquidCarrying = Kokkos::View<const int*, MemSpace>;
 /// `compensation` (reproducible sums, CompensatedSum.hpp) the sums are compensated, their low
 /// parts in the same fields of `compensation` (zero there too), to be folded once complete.
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
-                     const LiquidCarrying& liquid_m, Real gravity, GridFields& grid,
+                     const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
+                     NodeRecords& records, GridFields& grid,
                      const GridFields* compensation = nullptr);
 
 /// Nodal velocities v = momentum / mass and the nodal liquid content rho_L n S_L =
@@ -79,7 +84,7 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  const LiquidCarrying& liquid_m,
                                                  const ActiveNodes& active, Real dt,
                                                  VelocityBlend blend, MaterialPoints& points,
-                                                 GridFields& grid,
+                                                 NodeRecords& records, GridFields& grid,
                                                  const GridFields* compensation = nullptr);
 
 /// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
@@ -89,7 +94,8 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
 /// the nodal liquid content), and
 /// the displacement increment dt sum N v_S (7.13). `rates` is reallocated if needed.
 void interpolateVelocityGradients(const MaterialPoints& points, const PointShapes& shapes,
-                                  const LiquidCarrying& liquid_m, const GridFields& grid, Real dt,
+                                  const LiquidCarrying& liquid_m, const ActiveNodes& active,
+                                  const GridFields& grid, NodeRecords& records, Real dt,
                                   PointRates& rates);
 
 }  // namespace argine
