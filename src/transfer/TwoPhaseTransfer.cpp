@@ -207,21 +207,17 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
     const PointShape& shape = shape_p(p);
     if (shape.node[0] < 0) return;
     const bool wet = liquid_m(material_p(p)) != 0;
-    // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header)
+    // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
+    // interpolation a loop of its own: the conditions are tested once per point, not per node.
     Real as[kDim] = {0, 0}, al[kDim] = {0, 0}, vs_grid[kDim] = {0, 0}, vl[kDim] = {0, 0};
-    for (int a = 0; a < kNodes; ++a) {
-      const int i = shape.node[a];
-      const Real N = shape.value[a];
-      for (int d = 0; d < kDim; ++d) {
-        as[d] += N * values_i(i, kReadAccelerationSolid + d);
-        if (pic_solid > 0 || (wet && pic_liquid > 0))
-          vs_grid[d] += N * values_i(i, kReadVelocitySolid + d);
-        if (wet) {
-          al[d] += N * values_i(i, kReadAccelerationLiquid + d);
-          if (pic_liquid > 0) vl[d] += N * values_i(i, kReadVelocityLiquid + d);
-        }
-      }
-    }
+    const auto interpolate = [&](int slot, Real sum[kDim]) {
+      for (int a = 0; a < kNodes; ++a)
+        for (int d = 0; d < kDim; ++d) sum[d] += shape.value[a] * values_i(shape.node[a], slot + d);
+    };
+    interpolate(kReadAccelerationSolid, as);
+    if (pic_solid > 0 || (wet && pic_liquid > 0)) interpolate(kReadVelocitySolid, vs_grid);
+    if (wet) interpolate(kReadAccelerationLiquid, al);
+    if (wet && pic_liquid > 0) interpolate(kReadVelocityLiquid, vl);
     Real v_solid[kDim];
     for (int d = 0; d < kDim; ++d) {
       const Real v = velocity_solid_p(p, d);
