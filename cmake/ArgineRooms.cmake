@@ -15,8 +15,11 @@ function(argine_room name)
     target_link_libraries(${target} PUBLIC ${deps} argine_deps PRIVATE argine_warnings)
     # sqrt, log, sin, exp without errno (argine never reads it after them): the same values,
     # but sqrt becomes one instruction without a branch to the library and the compiler may
-    # treat the math functions as pure (hoist, merge repeated calls).
-    target_compile_options(${target} PRIVATE -fno-math-errno)
+    # treat the math functions as pure (hoist, merge repeated calls). Floating-point
+    # operations that cannot trap (argine never enables traps): the same values again, but
+    # the compiler may evaluate both sides of a branch and select, which is what lets it
+    # vectorise a loop with branches (the time-step criteria, doc/scaling.md).
+    target_compile_options(${target} PRIVATE -fno-math-errno -fno-trapping-math)
     target_include_directories(${target} PUBLIC
       $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
       $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/generated>

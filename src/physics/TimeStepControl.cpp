@@ -44,49 +44,120 @@ void TimeStepControl::configure(const TimeStepSpec& spec, Real mass_scaling,
   calls_since_update_ = 0;
 }
 
+namespace {
+
+/// The criteria's inputs of every point as arrays (CriterionScratch in the header), so that
+/// each criterion is one loop over contiguous values without branches that GCC evaluates
+/// for two points per instruction (SSE2; doc/scaling.md).
+struct CriterionArrays {
+  MaterialPoints points;
+  Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p;
+  Real mass_scaling = 1;
+
+  KOKKOS_INLINE_FUNCTION CriterionInput input(int p) const {
+    CriterionInput in;
+    in.element_size = gathered_p(p, kGatheredElementSize);
+    in.porosity = points.porosity(p);
+    in.solid_density = gathered_p(p, kGatheredSolidDensity);
+    in.liquid_bulk_modulus = gathered_p(p, kGatheredBulkModulus);
+    in.constrained_modulus = gathered_p(p, kGatheredConstrainedModulus);
+    in.mass_scaling = mass_scaling;
+    in.saturation = points.saturation(p);
+    in.saturation_suction_derivative = gathered_p(p, kGatheredSaturationSlope);
+    in.liquid_density = points.density_liquid(p);
+    in.hydraulic_conductivity = points.conductivity(p);
+    return in;
+  }
+};
+
+/// step_pc(p, slot) = criterion kKind at every point (also where it does not apply: the
+/// minimum skips those).
+template <CriterionKind kKind>
+void evaluateCriterion(const CriterionArrays& arrays, int slot, int count,
+                       Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc) {
+  // An int index like the lambda's: with Kokkos' default (64-bit) index the narrowing to
+  // int keeps GCC from vectorising the loop.
+  Kokkos::parallel_for(
+      "critical_time_step", Kokkos::RangePolicy<ExecSpace, Kokkos::IndexType<int>>(0, count),
+      KOKKOS_LAMBDA(const int p) { step_pc(p, slot) = criticalStep(kKind, arrays.input(p)); });
+}
+
+void evaluateCriterion(CriterionKind kind, const CriterionArrays& arrays, int slot, int count,
+                       Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc) {
+  switch (kind) {
+#define ARGINE_CRITERION_CASE(K) \
+  case CriterionKind::K:         \
+    return evaluateCriterion<CriterionKind::K>(arrays, slot, count, step_pc);
+    ARGINE_CRITERION_CASE(CflDry)
+    ARGINE_CRITERION_CASE(CflUndrained)
+    ARGINE_CRITERION_CASE(Consolidation)
+    ARGINE_CRITERION_CASE(Infiltration)
+    ARGINE_CRITERION_CASE(UnsaturatedLiquid)
+    ARGINE_CRITERION_CASE(UnsaturatedMixture)
+    ARGINE_CRITERION_CASE(UnsaturatedCoupled)
+    ARGINE_CRITERION_CASE(Mieremet)
+    ARGINE_CRITERION_CASE(MieremetLiquidDrag)
+#undef ARGINE_CRITERION_CASE
+  }
+}
+
+}  // namespace
+
 TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                                          const MaterialTable& table) const {
   const auto materials_m = table.materials();
-  const auto criteria = criteria_;
   const auto element_size = element_size_;
-  const int count = static_cast<int>(criteria.extent(0));
+  const int count = static_cast<int>(criteria_.extent(0));
   const int slots = count + 1;  // slot `count` = dry CFL of a dry point
-  const Real mass_scaling = mass_scaling_;
+  const auto criteria = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), criteria_);
+  bool any_dry = false;
+  for (int m = 0; m < table.count(); ++m) any_dry = any_dry || !carriesLiquid(table.host(m).phase);
+  if (static_cast<int>(gathered_p_.extent(0)) != points.count ||
+      static_cast<int>(step_pc_.extent(1)) != slots) {
+    gathered_p_ = Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace>(
+        "criterion_inputs_p", points.count);
+    step_pc_ = Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace>("critical_steps_pc", points.count,
+                                                                  slots);
+  }
   const MaterialPoints pts = points;
+  const auto gathered_p = gathered_p_;
+  const auto step_pc = step_pc_;
 
-  using Reducer = Kokkos::MinLoc<Real, long>;
-  Reducer::value_type best;
-  Kokkos::parallel_reduce(
-      "critical_time_step", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p, Reducer::value_type& min) {
+  // The element size and the material's parameters of each point; a point with element < 0
+  // takes element 0's size (it is skipped below), so the loops need no branch.
+  Kokkos::parallel_for(
+      "critical_time_step_inputs", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
         const int e = pts.element(p);
-        if (e < 0) return;
         const PointMaterial& material = materials_m(pts.material(p));
-        CriterionInput in;
-        in.element_size = element_size(e);
-        in.porosity = pts.porosity(p);
-        in.solid_density = material.solid_density;
-        in.liquid_bulk_modulus = material.liquid.bulk_modulus;
-        in.constrained_modulus = material.constrained_modulus;  // precomputed: one division less
-        in.mass_scaling = mass_scaling;
-        if (!carriesLiquid(material.phase)) {
-          const Real dt = criticalStepCflDry(in);
-          if (dt < min.val) {
-            min.val = dt;
-            min.loc = static_cast<long>(p) * slots + count;
-          }
-          return;
-        }
-        in.saturation = pts.saturation(p);
-        in.saturation_suction_derivative =
+        gathered_p(p, kGatheredElementSize) = element_size(e < 0 ? 0 : e);
+        gathered_p(p, kGatheredSolidDensity) = material.solid_density;
+        gathered_p(p, kGatheredBulkModulus) = material.liquid.bulk_modulus;
+        // precomputed per material: one division less
+        gathered_p(p, kGatheredConstrainedModulus) = material.constrained_modulus;
+        gathered_p(p, kGatheredSaturationSlope) =
             material.phase == PhaseModel::Unsaturated
                 ? saturationSuctionDerivative(material.retention,
                                               suctionOfPressure(pts.pressure_liquid(p)))
                 : 0;
-        in.liquid_density = pts.density_liquid(p);
-        in.hydraulic_conductivity = pts.conductivity(p);
-        for (int c = 0; c < count; ++c) {
-          const Real dt = criticalStep(criteria(c), in);
+      });
+  const CriterionArrays arrays{points, gathered_p, mass_scaling_};
+  for (int c = 0; c < count; ++c) evaluateCriterion(criteria(c), arrays, c, points.count, step_pc);
+  // Dry points have no liquid: the dry CFL criterion (4.62) alone (the header).
+  if (any_dry) evaluateCriterion(CriterionKind::CflDry, arrays, count, points.count, step_pc);
+
+  // The minimum over the points in order and, per point, over its criteria in order (the
+  // first of equal ones).
+  using Reducer = Kokkos::MinLoc<Real, long>;
+  Reducer::value_type best;
+  Kokkos::parallel_reduce(
+      "critical_time_step_minimum", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Reducer::value_type& min) {
+        if (pts.element(p) < 0) return;
+        const bool wet = carriesLiquid(materials_m(pts.material(p)).phase);
+        const int first = wet ? 0 : count, last = wet ? count : count + 1;
+        for (int c = first; c < last; ++c) {
+          const Real dt = step_pc(p, c);
           if (dt < min.val) {
             min.val = dt;
             min.loc = static_cast<long>(p) * slots + c;
@@ -106,8 +177,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   if (slot == count) {
     choice.governing = CriterionKind::CflDry;
   } else {
-    auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), criteria);
-    choice.governing = host(slot);
+    choice.governing = criteria(slot);
   }
   choice.point = point;
   auto id = Kokkos::create_mirror_view_and_copy(

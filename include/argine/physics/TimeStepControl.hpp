@@ -17,6 +17,17 @@
 namespace argine {
 
 class MaterialTable;
+
+/// Columns of TimeStepControl's per-point scratch: the criteria's inputs that are not point
+/// fields (the element's size, the material's parameters, dS_L/ds).
+enum CriterionGathered : int {
+  kGatheredElementSize = 0,
+  kGatheredSolidDensity,
+  kGatheredBulkModulus,
+  kGatheredConstrainedModulus,
+  kGatheredSaturationSlope,
+  kCriterionGathered
+};
 struct MaterialPoints;
 struct Mesh;
 struct TimeStepSpec;
@@ -76,6 +87,9 @@ class TimeStepControl {
  private:
   Kokkos::View<Real*, MemSpace> element_size_;
   Kokkos::View<CriterionKind*, MemSpace> criteria_;
+  // evaluate()'s scratch: the gathered inputs and each criterion's step, per point.
+  mutable Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p_;
+  mutable Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc_;
   bool automatic_ = true;
   Real fixed_step_ = 0;
   Real safety_factor_ = 0.5;
