@@ -110,8 +110,11 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   const int count = static_cast<int>(criteria_.extent(0));
   const int slots = count + 1;  // slot `count` = dry CFL of a dry point
   const auto criteria = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), criteria_);
-  bool any_dry = false;
-  for (int m = 0; m < table.count(); ++m) any_dry = any_dry || !carriesLiquid(table.host(m).phase);
+  bool any_dry = false, any_wet = false;  // the passes no point takes are skipped
+  for (int m = 0; m < table.count(); ++m) {
+    any_dry = any_dry || !carriesLiquid(table.host(m).phase);
+    any_wet = any_wet || carriesLiquid(table.host(m).phase);
+  }
   if (static_cast<int>(gathered_p_.extent(0)) != points.count ||
       static_cast<int>(step_pc_.extent(1)) != slots) {
     gathered_p_ = Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace>(
@@ -142,7 +145,8 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                 : 0;
       });
   const CriterionArrays arrays{points, gathered_p, mass_scaling_};
-  for (int c = 0; c < count; ++c) evaluateCriterion(criteria(c), arrays, c, points.count, step_pc);
+  for (int c = 0; c < count && any_wet; ++c)
+    evaluateCriterion(criteria(c), arrays, c, points.count, step_pc);
   // Dry points have no liquid: the dry CFL criterion (4.62) alone (the header).
   if (any_dry) evaluateCriterion(CriterionKind::CflDry, arrays, count, points.count, step_pc);
 
