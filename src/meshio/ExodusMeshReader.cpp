@@ -165,6 +165,11 @@ Mesh readExodusMesh(const std::string& path) {
   const int exoid = ex_open(path.c_str(), EX_READ, &comp_ws, &io_ws, &version);
   if (exoid < 0) throw InputError(path, "cannot open as an Exodus II file (ex_open failed)");
   ExodusFile file{exoid};
+  // ex_open merges the file's int64_status attribute into the integer sizes of the API, so a
+  // file could make ex_get_ids or ex_get_conn write 64-bit integers into argine's int arrays
+  // (a heap overflow: fuzz/fuzz_exodus_reader, session 9). argine passes 32-bit integers,
+  // whatever the file says.
+  ex_set_int64_status(exoid, 0);
   Reader reader(path, exoid);
 
   ex_init_params init{};

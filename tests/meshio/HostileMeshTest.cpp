@@ -188,5 +188,31 @@ TEST(HostileMesh, VariablesOfAnotherShapeThanTheExodusLayoutAreRejectedBeforeExo
   }
 }
 
+TEST(HostileMesh, AnInt64StatusAttributeDoesNotMakeTheLibraryWrite64BitIntegers) {
+  // fuzz/fuzz_exodus_reader (session 9): ex_open takes the API's integer sizes from the
+  // file's int64_status attribute too, and ex_get_ids then wrote 64-bit ids into argine's
+  // array of ints (a heap overflow valgrind showed in ncx_getn_int_longlong). The reader now
+  // sets 32-bit integers for the API: the mesh reads as without the attribute.
+  GeneratorSpec generator;
+  generator.element_size = 0.5;
+  const Mesh mesh = generateMesh(generator);
+  const std::string path = scratchFile("int64_status.exo");
+  writeExodusMesh(path, mesh);
+  int ncid = -1;
+  ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &ncid), NC_NOERR);
+  ASSERT_EQ(nc_redef(ncid), NC_NOERR);
+  const int all_int64_api = 0x8000 | 0x4000 | 0x2000 | 0x1000;  // EX_ALL_INT64_API
+  ASSERT_EQ(nc_put_att_int(ncid, NC_GLOBAL, "int64_status", NC_INT, 1, &all_int64_api), NC_NOERR);
+  ASSERT_EQ(nc_enddef(ncid), NC_NOERR);
+  ASSERT_EQ(nc_close(ncid), NC_NOERR);
+  const Mesh read = readExodusMesh(path);
+  ASSERT_EQ(read.numElements(), mesh.numElements());
+  ASSERT_EQ(read.blocks.size(), mesh.blocks.size());
+  EXPECT_EQ(read.blocks[0].id, mesh.blocks[0].id);
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int a = 0; a < mesh.nodesPerElement(); ++a)
+      ASSERT_EQ(read.connectivity(e, a), mesh.connectivity(e, a)) << "element " << e;
+}
+
 }  // namespace
 }  // namespace argine
