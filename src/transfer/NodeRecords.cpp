@@ -75,18 +75,27 @@ void addMomentumSumsToGrid(const ActiveNodes& active, NodeRecords& records, Grid
   addSumsToGrid<false>("add_momentum_sums_to_grid", active, records, grid);
 }
 
+namespace {
+
+/// values(i, slot + d) = field(i, d) for d < kDim.
+template <class Values, class Field>
+KOKKOS_FORCEINLINE_FUNCTION void readVector(const Values& values, int i, int slot,
+                                            const Field& field) {
+  for (int d = 0; d < kDim; ++d) values(i, slot + d) = field(i, d);
+}
+
+}  // namespace
+
 void readVelocityUpdateValues(const ActiveNodes& active, const GridFields& grid,
                               NodeRecords& records) {
   const auto values = records.values_i;
   const GridFields g = grid;
   forEachActiveNode(
       "read_velocity_update_values", active, KOKKOS_LAMBDA(const int i) {
-        for (int d = 0; d < kDim; ++d) {
-          values(i, kReadAccelerationSolid + d) = g.acceleration_solid_i(i, d);
-          values(i, kReadAccelerationLiquid + d) = g.acceleration_liquid_i(i, d);
-          values(i, kReadVelocitySolid + d) = g.velocity_solid_i(i, d);
-          values(i, kReadVelocityLiquid + d) = g.velocity_liquid_i(i, d);
-        }
+        readVector(values, i, kReadAccelerationSolid, g.acceleration_solid_i);
+        readVector(values, i, kReadAccelerationLiquid, g.acceleration_liquid_i);
+        readVector(values, i, kReadVelocitySolid, g.velocity_solid_i);
+        readVector(values, i, kReadVelocityLiquid, g.velocity_liquid_i);
       });
 }
 
@@ -95,10 +104,8 @@ void readStrainValues(const ActiveNodes& active, const GridFields& grid, NodeRec
   const GridFields g = grid;
   forEachActiveNode(
       "read_strain_values", active, KOKKOS_LAMBDA(const int i) {
-        for (int d = 0; d < kDim; ++d) {
-          values(i, kReadStrainVelocitySolid + d) = g.velocity_solid_i(i, d);
-          values(i, kReadStrainVelocityLiquid + d) = g.velocity_liquid_i(i, d);
-        }
+        readVector(values, i, kReadStrainVelocitySolid, g.velocity_solid_i);
+        readVector(values, i, kReadStrainVelocityLiquid, g.velocity_liquid_i);
         values(i, kReadStrainLiquidContent) = g.liquid_content_i(i);
       });
 }
