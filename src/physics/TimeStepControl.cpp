@@ -36,17 +36,14 @@ void TimeStepControl::configure(const TimeStepSpec& spec, Real mass_scaling,
   }
   if (automatic_ && spec.criteria.empty())
     throw InputError(where + "/Criteria", "expected at least one criterion, got none");
-  criteria_ = Kokkos::View<CriterionKind*, MemSpace>("criteria", spec.criteria.size());
-  auto host = Kokkos::create_mirror_view(criteria_);
-  for (std::size_t c = 0; c < spec.criteria.size(); ++c) host(c) = spec.criteria[c];
-  Kokkos::deep_copy(criteria_, host);
+  criteria_ = spec.criteria;
   stale_ = true;
   calls_since_update_ = 0;
 }
 
 namespace {
 
-/// The criteria's inputs of every point as arrays (CriterionScratch in the header), so that
+/// The criteria's inputs of every point as arrays (CriterionGathered in the header), so that
 /// each criterion is one loop over contiguous values without branches that GCC evaluates
 /// for two points per instruction (SSE2; doc/scaling.md).
 struct CriterionArrays {
@@ -107,9 +104,8 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                                          const MaterialTable& table) const {
   const auto materials_m = table.materials();
   const auto element_size = element_size_;
-  const int count = static_cast<int>(criteria_.extent(0));
-  const int slots = count + 1;  // slot `count` = dry CFL of a dry point
-  const auto criteria = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), criteria_);
+  const int count = static_cast<int>(criteria_.size());
+  const int slots = count + 1;            // slot `count` = dry CFL of a dry point
   bool any_dry = false, any_wet = false;  // the passes no point takes are skipped
   for (int m = 0; m < table.count(); ++m) {
     any_dry = any_dry || !carriesLiquid(table.host(m).phase);
@@ -126,14 +122,14 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   const auto gathered_p = gathered_p_;
   const auto step_pc = step_pc_;
 
-  // The element size and the material's parameters of each point; a point with element < 0
-  // takes element 0's size (it is skipped below), so the loops need no branch.
+  // The element size and the material's parameters of each point, so that the criteria's
+  // loops need no branch; a point with element < 0 gets size 0 (it is skipped below).
   Kokkos::parallel_for(
       "critical_time_step_inputs", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
         const int e = pts.element(p);
         const PointMaterial& material = materials_m(pts.material(p));
-        gathered_p(p, kGatheredElementSize) = element_size(e < 0 ? 0 : e);
+        gathered_p(p, kGatheredElementSize) = e < 0 ? Real(0) : element_size(e);
         gathered_p(p, kGatheredSolidDensity) = material.solid_density;
         gathered_p(p, kGatheredBulkModulus) = material.liquid.bulk_modulus;
         // precomputed per material: one division less
@@ -146,7 +142,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
       });
   const CriterionArrays arrays{points, gathered_p, mass_scaling_};
   for (int c = 0; c < count && any_wet; ++c)
-    evaluateCriterion(criteria(c), arrays, c, points.count, step_pc);
+    evaluateCriterion(criteria_[c], arrays, c, points.count, step_pc);
   // Dry points have no liquid: the dry CFL criterion (4.62) alone (the header).
   if (any_dry) evaluateCriterion(CriterionKind::CflDry, arrays, count, points.count, step_pc);
 
@@ -181,7 +177,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   if (slot == count) {
     choice.governing = CriterionKind::CflDry;
   } else {
-    choice.governing = criteria(slot);
+    choice.governing = criteria_[slot];
   }
   choice.point = point;
   auto id = Kokkos::create_mirror_view_and_copy(

@@ -86,7 +86,7 @@ class TimeStepControl {
 
  private:
   Kokkos::View<Real*, MemSpace> element_size_;
-  Kokkos::View<CriterionKind*, MemSpace> criteria_;
+  std::vector<CriterionKind> criteria_;  ///< the stage's, in order (slots 0, 1, ...)
   // evaluate()'s scratch: the gathered inputs and each criterion's step, per point.
   mutable Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p_;
   mutable Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc_;
