@@ -31,7 +31,7 @@ LiquidHeadStabilisation::LiquidHeadStabilisation(const MaterialTable& table, int
     active_ = active_ || (carriesLiquid(material.phase) && material.locking.head_stabilisation > 0);
   }
   if (!active_) return;
-  node_sums_ = Kokkos::View<Real* [2], MemSpace>("head_stabilisation_node_sums", nodes);
+  heads_.allocateSums(1, 0, nodes);
 }
 
 void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPoints& points,
@@ -39,16 +39,12 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
                                     PointRates& rates, Real dt, Real gravity) {
   if (!active_) return;
   const int count = points.count;
-  if (static_cast<int>(head_point_.extent(0)) != count) {
-    head_point_ = Kokkos::View<Real*, MemSpace>("head_stabilisation_head", count);
-    conductance_point_ = Kokkos::View<Real*, MemSpace>("head_stabilisation_conductance", count);
-    mode_point_ = Kokkos::View<int*, MemSpace>("head_stabilisation_mode", count);
-  }
+  heads_.fitPoints(count);
   const auto materials_m = table.materials();
   const MaterialPoints pts = points;
-  const auto head_p = head_point_;
-  const auto conductance_p = conductance_point_;
-  const auto mode_p = mode_point_;
+  const auto head_p = Kokkos::subview(heads_.value_pc, Kokkos::ALL, 0);
+  const auto conductance_p = heads_.weight_p;
+  const auto mode_p = Kokkos::subview(heads_.mode_pc, Kokkos::ALL, 0);
   Kokkos::parallel_for(
       "head_stabilisation_in", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
@@ -73,8 +69,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         conductance_p(p) = conductance;
         head_p(p) = piezometricPressure(material, pressure, pts.position(p, 1), gravity);
       });
-  averagePointValues(points, shapes, active, mode_point_, conductance_point_, head_point_,
-                     element_sums_, node_sums_, exchange_, compensation_);
+  averagePointValues(points, shapes, active, heads_, exchange_);
   const auto strain_increment_p = rates.strain_increment_p;
   const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
   const auto divergence_p = rates.liquid_divergence_increment_p;

@@ -12,41 +12,72 @@ namespace argine {
 
 namespace KE = Kokkos::Experimental;
 
+void AveragingScratch::allocateSums(int channels, int elements, int nodes) {
+  element_sums = Kokkos::View<Real**, MemSpace>("averaging_element_sums", elements, 2 * channels);
+  node_sums = Kokkos::View<Real**, MemSpace>("averaging_node_sums", nodes, 2 * channels);
+  mode_pc = {};
+  weight_p = {};
+  value_pc = {};
+  compensate(compensated());
+}
+
+void AveragingScratch::fitPoints(int points) {
+  if (static_cast<int>(weight_p.extent(0)) == points && weight_p.data() != nullptr) return;
+  mode_pc = Kokkos::View<int**, Kokkos::LayoutLeft, MemSpace>("averaging_mode", points, channels());
+  weight_p = Kokkos::View<Real*, MemSpace>("averaging_weight", points);
+  value_pc =
+      Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace>("averaging_value", points, channels());
+}
+
+void AveragingScratch::compensate(bool on) {
+  const int columns = static_cast<int>(node_sums.extent(1));
+  element_lo = Kokkos::View<Real**, MemSpace>("averaging_element_lo",
+                                              on ? element_sums.extent(0) : 0, columns);
+  node_lo =
+      Kokkos::View<Real**, MemSpace>("averaging_node_lo", on ? node_sums.extent(0) : 0, columns);
+}
+
 namespace {
 
-/// The averaging's element and node sums of w q and w, plain or compensated (lo given).
+/// The averaging's element and node sums of w q and w per channel, plain or compensated.
 template <bool kCompensated>
 void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
-                        Kokkos::View<const int*, MemSpace> mode_p,
-                        Kokkos::View<const Real*, MemSpace> weight_p,
-                        Kokkos::View<const Real*, MemSpace> value_p,
-                        Kokkos::View<Real* [2], MemSpace> element_sums,
-                        Kokkos::View<Real* [2], MemSpace> node_sums,
-                        Kokkos::View<Real* [2], MemSpace> element_lo,
-                        Kokkos::View<Real* [2], MemSpace> node_lo) {
+                        const AveragingScratch& s) {
   const auto element_p = points.element;
   const auto shape_p = shapes.shape_p;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
+  const int channels = s.channels();
+  const auto mode_pc = s.mode_pc;
+  const auto weight_p = s.weight_p;
+  const auto value_pc = s.value_pc;
+  auto element_sums = s.element_sums, node_sums = s.node_sums;  // (contribute: not const)
+  const auto element_lo = kCompensated ? s.element_lo : s.element_sums;
+  const auto node_lo = kCompensated ? s.node_lo : s.node_sums;
   auto element_sv = KE::create_scatter_view(element_sums);
   auto node_sv = KE::create_scatter_view(node_sums);
   Kokkos::parallel_for(
       "averaging_scatter", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        const int mode = mode_p(p);
         const int e = element_p(p);
-        if (mode == kAverageNone || e < 0) return;
-        const Real w = weight_p(p), wq = w * value_p(p);
-        if (mode == kAverageElement) {
-          auto sums = element_sv.access();
-          addToNode<kCompensated>(sums, element_sums, element_lo, e, 0, wq);
-          addToNode<kCompensated>(sums, element_sums, element_lo, e, 1, w);
-          return;
-        }
-        auto sums = node_sv.access();
+        if (e < 0) return;
+        const Real w = weight_p(p);
         const PointShape& shape = shape_p(p);
-        for (int a = 0; a < nodes_per_element; ++a) {
-          addToNode<kCompensated>(sums, node_sums, node_lo, shape.node[a], 0, shape.value[a] * wq);
-          addToNode<kCompensated>(sums, node_sums, node_lo, shape.node[a], 1, shape.value[a] * w);
+        for (int c = 0; c < channels; ++c) {
+          const int mode = mode_pc(p, c);
+          if (mode == kAverageNone) continue;
+          const Real wq = w * value_pc(p, c);
+          if (mode == kAverageElement) {
+            auto sums = element_sv.access();
+            addToNode<kCompensated>(sums, element_sums, element_lo, e, 2 * c, wq);
+            addToNode<kCompensated>(sums, element_sums, element_lo, e, 2 * c + 1, w);
+            continue;
+          }
+          auto sums = node_sv.access();
+          for (int a = 0; a < nodes_per_element; ++a) {
+            const int i = shape.node[a];
+            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c, shape.value[a] * wq);
+            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c + 1, shape.value[a] * w);
+          }
         }
       });
   KE::contribute(element_sums, element_sv);
@@ -56,66 +87,64 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
 }  // namespace
 
 void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
-                        const ActiveNodes& active, Kokkos::View<const int*, MemSpace> mode_p,
-                        Kokkos::View<const Real*, MemSpace> weight_p,
-                        Kokkos::View<Real*, MemSpace> value_p,
-                        Kokkos::View<Real* [2], MemSpace> element_sums,
-                        Kokkos::View<Real* [2], MemSpace> node_sums, NodalExchange* exchange,
-                        const AveragingCompensation& compensation) {
+                        const ActiveNodes& active, AveragingScratch& scratch,
+                        NodalExchange* exchange) {
   const int count = points.count;
   const auto element_p = points.element;
   const auto shape_p = shapes.shape_p;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
   const auto active_nodes = active.nodes();
-  const bool compensated = compensation.enabled();
+  const int columns = 2 * scratch.channels();
+  const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
   Kokkos::deep_copy(element_sums, 0.0);
   Kokkos::parallel_for(
       "averaging_zero_nodes", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
-        node_sums(active_nodes(j), 0) = 0;
-        node_sums(active_nodes(j), 1) = 0;
+        for (int k = 0; k < columns; ++k) node_sums(active_nodes(j), k) = 0;
       });
-  if (compensated) {  // lo is zero: the last call folded it (below)
-    scatterAverageSums<true>(points, shapes, mode_p, weight_p, value_p, element_sums, node_sums,
-                             compensation.element_lo, compensation.node_lo);
-  } else {
-    scatterAverageSums<false>(points, shapes, mode_p, weight_p, value_p, element_sums, node_sums,
-                              element_sums, node_sums);
-  }
+  if (scratch.compensated())  // lo is zero: the last call folded it (below)
+    scatterAverageSums<true>(points, shapes, scratch);
+  else
+    scatterAverageSums<false>(points, shapes, scratch);
   // Several ranks: a node shared with another rank also has that rank's points in its sums.
   // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
-  if (compensated) {
-    if (exchange)
-      exchange->sumCompensated({nodalField(node_sums)}, {nodalField(compensation.node_lo)});
-    foldCompensatedSums(active, node_sums, compensation.node_lo);
-    const auto element_lo = compensation.element_lo;
+  if (scratch.compensated()) {
+    if (exchange) exchange->sumCompensated({nodalField(node_sums)}, {nodalField(scratch.node_lo)});
+    foldCompensatedSums(active, node_sums, scratch.node_lo);
+    const auto element_lo = scratch.element_lo;
     Kokkos::parallel_for(
         "averaging_fold_elements", Kokkos::RangePolicy<ExecSpace>(0, element_sums.extent(0)),
         KOKKOS_LAMBDA(const int e) {
-          for (int c = 0; c < 2; ++c) {
-            element_sums(e, c) += element_lo(e, c);
-            element_lo(e, c) = 0;
+          for (int k = 0; k < columns; ++k) {
+            element_sums(e, k) += element_lo(e, k);
+            element_lo(e, k) = 0;
           }
         });
   } else if (exchange) {
     exchange->sum({nodalField(node_sums)});
   }
+  const auto mode_pc = scratch.mode_pc;
+  const auto value_pc = scratch.value_pc;
+  const int channels = scratch.channels();
   Kokkos::parallel_for(
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
-        const int mode = mode_p(p);
         const int e = element_p(p);
-        if (mode == kAverageNone || e < 0) return;
-        if (mode == kAverageElement) {
-          value_p(p) = element_sums(e, 0) / element_sums(e, 1);
-          return;
-        }
+        if (e < 0) return;
         const PointShape& shape = shape_p(p);
-        Real average = 0;
-        for (int a = 0; a < nodes_per_element; ++a) {
-          const int i = shape.node[a];
-          average += shape.value[a] * node_sums(i, 0) / node_sums(i, 1);
+        for (int c = 0; c < channels; ++c) {
+          const int mode = mode_pc(p, c);
+          if (mode == kAverageNone) continue;
+          if (mode == kAverageElement) {
+            value_pc(p, c) = element_sums(e, 2 * c) / element_sums(e, 2 * c + 1);
+            continue;
+          }
+          Real average = 0;
+          for (int a = 0; a < nodes_per_element; ++a) {
+            const int i = shape.node[a];
+            average += shape.value[a] * node_sums(i, 2 * c) / node_sums(i, 2 * c + 1);
+          }
+          value_pc(p, c) = average;
         }
-        value_p(p) = average;
       });
 }
 

@@ -27,9 +27,8 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
     pressure_ = pressure_ || (material.phase == PhaseModel::Saturated &&
                               material.locking.liquid_pressure != IncrementAveraging::None);
   }
-  if (!strain_ && !pressure_) return;
-  element_sums_ = Kokkos::View<Real* [2], MemSpace>("averaging_element_sums", elements);
-  node_sums_ = Kokkos::View<Real* [2], MemSpace>("averaging_node_sums", nodes);
+  if (strain_) increments_.allocateSums(kChannels, elements, nodes);
+  if (pressure_) pressure_increments_.allocateSums(1, elements, nodes);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
@@ -38,11 +37,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
                                                   const ActiveNodes& active, PointRates& rates) {
   if (!strain_) return;
   const int count = points.count;
-  if (static_cast<int>(value_point_.extent(0)) != count) {
-    value_point_ = Kokkos::View<Real*, MemSpace>("averaging_value", count);
-    weight_point_ = Kokkos::View<Real*, MemSpace>("averaging_weight", count);
-    mode_point_ = Kokkos::View<int*, MemSpace>("averaging_mode", count);
-  }
+  increments_.fitPoints(count);
   const auto materials_m = table.materials();
   const auto material_p = points.material;
   const auto volume_p = points.volume;
@@ -50,57 +45,46 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
   const auto strain_increment_p = rates.strain_increment_p;
   const auto divergence_p = rates.liquid_divergence_increment_p;
   const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
-  const auto value_p = value_point_;
-  const auto weight_p = weight_point_;
-  const auto mode_p = mode_point_;
-  // The liquid terms first, at liquid-carrying points: the relative divergence dt div(v_L -
-  // v_S) and the flux divergence dt div(c w) get the same averaging as d eps_vol, so the
-  // pore pressure follows S (B u_L) with one smoothing operator S for both phases. (Smoothing
-  // the solid's volume change alone couples the phases through S - I in the liquid equation
-  // only: a non-symmetric coupling that the explicit step amplifies.)
-  auto averageLiquid = [&](bool relative) {
-    Kokkos::parallel_for(
-        "averaging_liquid_in", Kokkos::RangePolicy<ExecSpace>(0, count),
-        KOKKOS_LAMBDA(const int p) {
-          const PointMaterial& material = materials_m(material_p(p));
-          mode_p(p) = carriesLiquid(material.phase)
-                          ? static_cast<int>(material.locking.volumetric_strain)
-                          : kNone;
-          weight_p(p) = volume_p(p);
-          value_p(p) =
-              relative ? divergence_p(p) - (strain_increment_p(p, XX) + strain_increment_p(p, YY))
-                       : flux_divergence_p(p);
-        });
-    averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                       element_sums_, node_sums_, exchange_, compensation_);
-    Kokkos::parallel_for(
-        "averaging_liquid_out", Kokkos::RangePolicy<ExecSpace>(0, count),
-        KOKKOS_LAMBDA(const int p) {
-          if (mode_p(p) == kNone || element_p(p) < 0) return;
-          if (relative)
-            divergence_p(p) = value_p(p);  // the solid's d eps_vol is added below
-          else
-            flux_divergence_p(p) = value_p(p);
-        });
-  };
-  averageLiquid(false);
-  averageLiquid(true);
+  const auto value_pc = increments_.value_pc;
+  const auto weight_p = increments_.weight_p;
+  const auto mode_pc = increments_.mode_pc;
+  // At liquid-carrying points the relative divergence dt div(v_L - v_S) and the flux
+  // divergence dt div(c w) get the same averaging as d eps_vol, so the pore pressure follows
+  // S (B u_L) with one smoothing operator S for both phases. (Smoothing the solid's volume
+  // change alone couples the phases through S - I in the liquid equation only: a
+  // non-symmetric coupling that the explicit step amplifies.) The three are independent
+  // (each read before any is written back): one averaging, one exchange.
   Kokkos::parallel_for(
-      "averaging_strain_in", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
-        mode_p(p) = static_cast<int>(materials_m(material_p(p)).locking.volumetric_strain);
+      "averaging_increments_in", Kokkos::RangePolicy<ExecSpace>(0, count),
+      KOKKOS_LAMBDA(const int p) {
+        const PointMaterial& material = materials_m(material_p(p));
+        const int mode = static_cast<int>(material.locking.volumetric_strain);
+        const Real strain = strain_increment_p(p, XX) + strain_increment_p(p, YY);
+        const int liquid_mode = carriesLiquid(material.phase) ? mode : kNone;
         weight_p(p) = volume_p(p);
-        value_p(p) = strain_increment_p(p, XX) + strain_increment_p(p, YY);
+        mode_pc(p, kFluxDivergence) = liquid_mode;
+        value_pc(p, kFluxDivergence) = flux_divergence_p(p);
+        mode_pc(p, kRelativeDivergence) = liquid_mode;
+        value_pc(p, kRelativeDivergence) = divergence_p(p) - strain;
+        mode_pc(p, kVolumetricStrain) = mode;
+        value_pc(p, kVolumetricStrain) = strain;
       });
-  averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_, exchange_, compensation_);
+  averagePointValues(points, shapes, active, increments_, exchange_);
   Kokkos::parallel_for(
-      "averaging_strain_out", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
-        if (mode_p(p) == kNone || element_p(p) < 0) return;
-        const Real shift = value_p(p) - (strain_increment_p(p, XX) + strain_increment_p(p, YY));
+      "averaging_increments_out", Kokkos::RangePolicy<ExecSpace>(0, count),
+      KOKKOS_LAMBDA(const int p) {
+        if (element_p(p) < 0) return;
+        if (mode_pc(p, kFluxDivergence) != kNone)
+          flux_divergence_p(p) = value_pc(p, kFluxDivergence);
+        if (mode_pc(p, kRelativeDivergence) != kNone)
+          divergence_p(p) = value_pc(p, kRelativeDivergence);  // + the averaged d eps_vol below
+        if (mode_pc(p, kVolumetricStrain) == kNone) return;
+        const Real averaged = value_pc(p, kVolumetricStrain);
+        const Real shift = averaged - (strain_increment_p(p, XX) + strain_increment_p(p, YY));
         strain_increment_p(p, XX) += shift / 2;
         strain_increment_p(p, YY) += shift / 2;
         // dt div v_L = averaged relative divergence + averaged d eps_vol.
-        if (carriesLiquid(materials_m(material_p(p)).phase)) divergence_p(p) += value_p(p);
+        if (carriesLiquid(materials_m(material_p(p)).phase)) divergence_p(p) += averaged;
       });
 }
 
@@ -117,17 +101,13 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
                                                     const ActiveNodes& active) {
   if (!pressure_) return;
   const int count = points.count;
-  if (static_cast<int>(value_point_.extent(0)) != count) {
-    value_point_ = Kokkos::View<Real*, MemSpace>("averaging_value", count);
-    weight_point_ = Kokkos::View<Real*, MemSpace>("averaging_weight", count);
-    mode_point_ = Kokkos::View<int*, MemSpace>("averaging_mode", count);
-  }
+  pressure_increments_.fitPoints(count);
   const auto materials_m = table.materials();
   const MaterialPoints pts = points;
   const auto old_p = old_pressure_;
-  const auto value_p = value_point_;
-  const auto weight_p = weight_point_;
-  const auto mode_p = mode_point_;
+  const auto value_p = Kokkos::subview(pressure_increments_.value_pc, Kokkos::ALL, 0);
+  const auto weight_p = pressure_increments_.weight_p;
+  const auto mode_p = Kokkos::subview(pressure_increments_.mode_pc, Kokkos::ALL, 0);
   Kokkos::parallel_for(
       "averaging_pressure_in", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
@@ -138,8 +118,7 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
         weight_p(p) = pts.porosity(p) * pts.volume(p);
         value_p(p) = pts.pressure_liquid(p) - old_p(p);
       });
-  averagePointValues(points, shapes, active, mode_point_, weight_point_, value_point_,
-                     element_sums_, node_sums_, exchange_, compensation_);
+  averagePointValues(points, shapes, active, pressure_increments_, exchange_);
   Kokkos::parallel_for(
       "averaging_pressure_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {

@@ -30,6 +30,21 @@ void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real* [kDim], M
       });
 }
 
+void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real**, MemSpace> hi,
+                         Kokkos::View<Real**, MemSpace> lo) {
+  const auto nodes = active.nodes();
+  const int columns = static_cast<int>(hi.extent(1));
+  Kokkos::parallel_for(
+      "fold_compensated_sums", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int k = 0; k < columns; ++k) {
+          hi(i, k) += lo(i, k);
+          lo(i, k) = 0;
+        }
+      });
+}
+
 CompensatedKinetic compensatedKineticEnergies(
     Kokkos::View<const int*, MemSpace> element_p, Kokkos::View<const int*, MemSpace> material_p,
     Kokkos::View<const int*, MemSpace> liquid_m, Kokkos::View<const Real*, MemSpace> mass_solid_p,

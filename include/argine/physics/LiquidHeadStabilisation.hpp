@@ -61,21 +61,15 @@ class LiquidHeadStabilisation {
   void apply(const MaterialTable& table, const MaterialPoints& points, const PointShapes& shapes,
              const ActiveNodes& active, PointRates& rates, Real dt, Real gravity);
 
-  /// Reproducible sums (transfer/CompensatedSum.hpp): the node and element sums compensated.
-  void compensateSums(bool on) {
-    compensation_.allocate(on, static_cast<int>(element_sums_.extent(0)),
-                           static_cast<int>(node_sums_.extent(0)));
-  }
+  /// Reproducible sums (transfer/CompensatedSum.hpp): the node sums compensated.
+  void compensateSums(bool on) { heads_.compensate(on); }
 
  private:
   bool active_ = false;
   NodalExchange* exchange_ = nullptr;
-  AveragingCompensation compensation_;               ///< reproducible sums: the low parts
-  Kokkos::View<Real*, MemSpace> head_point_;         ///< phi_p, then sum_i N_i(x_p) phi_i
-  Kokkos::View<Real*, MemSpace> conductance_point_;  ///< g_p (kg/(Pa s)); 0: not exchanged
-  Kokkos::View<int*, MemSpace> mode_point_;          ///< kAverageNodal or kAverageNone
-  Kokkos::View<Real* [2], MemSpace> element_sums_;   ///< unused (nodal only); size 0
-  Kokkos::View<Real* [2], MemSpace> node_sums_;      ///< sum N g phi, sum N g per node
+  /// One channel, nodal: mode kAverageNodal or kAverageNone, weight g_p (kg/(Pa s); 0: not
+  /// exchanged), value phi_p, then sum_i N_i(x_p) phi_i.
+  AveragingScratch heads_;
 };
 
 }  // namespace argine

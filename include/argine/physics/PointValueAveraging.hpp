@@ -1,6 +1,6 @@
 #pragma once
 /// @file PointValueAveraging.hpp
-/// The volume-weighted smoothing of one point quantity that the locking mitigation
+/// The volume-weighted smoothing of point quantities that the locking mitigation
 /// (VolumetricAveraging) and the liquid head stabilisation (LiquidHeadStabilisation) share:
 ///
 ///   element  q_p <- sum_{q in e} w_q q_q / sum_{q in e} w_q  over the points of the point's
@@ -10,6 +10,10 @@
 ///
 /// Both keep sum_p w_p q_p over an element (element) or over the body (nodal, with complete
 /// node sums): sum_p w_p sum_i N_i(x_p) q_i = sum_i q_i sum_p N_i(x_p) w_p.
+///
+/// Several quantities ("channels") that share the weight are averaged in one call: one pass
+/// over the points and, on several MPI ranks, ONE exchange of their node sums (each channel's
+/// sums are the ones a call of its own would form, so the results are the same to the bit).
 
 #include "argine/core/Types.hpp"
 
@@ -25,28 +29,39 @@ constexpr int kAverageNone = 0;
 constexpr int kAverageElement = 1;
 constexpr int kAverageNodal = 2;
 
-/// Low parts of the averaging's sums for reproducible sums (transfer/CompensatedSum.hpp),
-/// shaped as the element and node sums; empty: plain sums.
-struct AveragingCompensation {
-  Kokkos::View<Real* [2], MemSpace> element_lo;
-  Kokkos::View<Real* [2], MemSpace> node_lo;
-  bool enabled() const { return node_lo.extent(0) > 0; }
-  /// Allocates both for `elements` and `nodes` (reproducible sums on), or empties them.
-  void allocate(bool on, int elements, int nodes) {
-    element_lo = Kokkos::View<Real* [2], MemSpace>("averaging_element_lo", on ? elements : 0);
-    node_lo = Kokkos::View<Real* [2], MemSpace>("averaging_node_lo", on ? nodes : 0);
-  }
+/// The inputs, outputs and sums of averagePointValues for `channels()` quantities.
+struct AveragingScratch {
+  /// (point, channel): kAverage* of the point in that channel.
+  Kokkos::View<int**, Kokkos::LayoutLeft, MemSpace> mode_pc;
+  /// Per point: its weight w_p (> 0 where some channel's mode is not none).
+  Kokkos::View<Real*, MemSpace> weight_p;
+  /// (point, channel): the quantity q_p, replaced by its average.
+  Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> value_pc;
+  /// (element, 2c): sum w q of channel c; (element, 2c + 1): sum w. Empty: nodal only.
+  Kokkos::View<Real**, MemSpace> element_sums;
+  /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w.
+  Kokkos::View<Real**, MemSpace> node_sums;
+  /// Reproducible sums (transfer/CompensatedSum.hpp): the low parts of both sums, shaped as
+  /// they are; empty: plain sums.
+  Kokkos::View<Real**, MemSpace> element_lo, node_lo;
+
+  /// Sums of `channels` quantities over `elements` elements (0 when only nodal averaging is
+  /// used) and `nodes` nodes.
+  void allocateSums(int channels, int elements, int nodes);
+  /// The per-point views for `points` points (kept when the count is unchanged).
+  void fitPoints(int points);
+  /// Allocates (on) or empties (off) the low parts.
+  void compensate(bool on);
+  int channels() const { return static_cast<int>(node_sums.extent(1)) / 2; }
+  bool compensated() const { return node_lo.extent(0) > 0; }
 };
 
-/// Replaces value(p) by its element or nodal average (file comment of the header) at the
-/// points with mode(p) != none; weight(p) > 0 there. Elements and nodes see only the points
-/// of the same mode. With `compensation` enabled the sums are compensated (and exchanged so).
+/// Replaces value_pc(p, c) by its element or nodal average (file comment of the header) at
+/// the points with mode_pc(p, c) != none, for every channel c of `scratch`. Elements and
+/// nodes see only the points of the same mode in the same channel. On several ranks
+/// `exchange` completes the node sums of all channels in one exchange (collective).
 void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
-                        const ActiveNodes& active, Kokkos::View<const int*, MemSpace> mode_p,
-                        Kokkos::View<const Real*, MemSpace> weight_p,
-                        Kokkos::View<Real*, MemSpace> value_p,
-                        Kokkos::View<Real* [2], MemSpace> element_sums,
-                        Kokkos::View<Real* [2], MemSpace> node_sums, NodalExchange* exchange,
-                        const AveragingCompensation& compensation = {});
+                        const ActiveNodes& active, AveragingScratch& scratch,
+                        NodalExchange* exchange);
 
 }  // namespace argine

@@ -65,21 +65,20 @@ class VolumetricAveraging {
 
   /// Reproducible sums (transfer/CompensatedSum.hpp): the node and element sums compensated.
   void compensateSums(bool on) {
-    compensation_.allocate(on, static_cast<int>(element_sums_.extent(0)),
-                           static_cast<int>(node_sums_.extent(0)));
+    increments_.compensate(on);
+    pressure_increments_.compensate(on);
   }
 
  private:
+  /// The channels of increments_: the three increments of the step averaged together (one
+  /// exchange on several ranks).
+  enum Channel : int { kFluxDivergence = 0, kRelativeDivergence, kVolumetricStrain, kChannels };
   bool strain_ = false;
   bool pressure_ = false;
-  NodalExchange* exchange_ = nullptr;               ///< several ranks: completes the node sums
-  AveragingCompensation compensation_;              ///< reproducible sums: the low parts
-  Kokkos::View<Real*, MemSpace> value_point_;       ///< per point: the quantity, then its average
-  Kokkos::View<Real*, MemSpace> weight_point_;      ///< per point: its weight (0: not averaged)
-  Kokkos::View<int*, MemSpace> mode_point_;         ///< per point: IncrementAveraging as int
-  Kokkos::View<Real*, MemSpace> old_pressure_;      ///< p_L before the step
-  Kokkos::View<Real* [2], MemSpace> element_sums_;  ///< sum w q, sum w per element
-  Kokkos::View<Real* [2], MemSpace> node_sums_;     ///< sum N w q, sum N w per node
+  NodalExchange* exchange_ = nullptr;           ///< several ranks: completes the node sums
+  AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
+  AveragingScratch pressure_increments_;        ///< d p_L (one channel)
+  Kokkos::View<Real*, MemSpace> old_pressure_;  ///< p_L before the step
 };
 
 }  // namespace argine

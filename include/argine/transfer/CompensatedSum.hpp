@@ -91,5 +91,7 @@ void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real*, MemSpace>
                          Kokkos::View<Real*, MemSpace> lo);
 void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real* [kDim], MemSpace> hi,
                          Kokkos::View<Real* [kDim], MemSpace> lo);
+void foldCompensatedSums(const ActiveNodes& nodes, Kokkos::View<Real**, MemSpace> hi,
+                         Kokkos::View<Real**, MemSpace> lo);
 
 }  // namespace argine
