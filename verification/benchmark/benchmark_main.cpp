@@ -30,14 +30,13 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "BenchmarkScenes.hpp"
 #include "CommandLine.hpp"
+#include "PointFingerprint.hpp"
 #include "VerificationMain.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
-#include "argine/points/PointFields.hpp"
 #include "argine/timestep/Criteria.hpp"
 
 namespace argine::benchmark {
@@ -65,26 +64,6 @@ std::string loadAverage() {
   std::string one, five, fifteen;
   if (!(in >> one >> five >> fifteen)) return "unknown";
   return one + " " + five + " " + fifteen;
-}
-
-/// FNV-1a hash of every point field, points taken in id order (bit patterns): equal
-/// fingerprints mean bit-for-bit equal results, whatever order the points are stored in.
-unsigned long long fingerprint(const MaterialPoints& points) {
-  const auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.id);
-  std::vector<int> index_of_id(points.count);
-  for (int p = 0; p < points.count; ++p) index_of_id.at(id(p)) = p;
-  unsigned long long hash = 1469598103934665603ULL;
-  forEachPointField(points, [&](const char*, const auto& view) {
-    auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
-    const std::size_t width = host.span() / std::max<std::size_t>(host.extent(0), 1);
-    using Value = typename std::decay_t<decltype(host)>::value_type;
-    for (const int p : index_of_id) {
-      const auto* bytes = reinterpret_cast<const unsigned char*>(host.data() + p * width);
-      for (std::size_t b = 0; b < width * sizeof(Value); ++b)
-        hash = (hash ^ bytes[b]) * 1099511628211ULL;
-    }
-  });
-  return hash;
 }
 
 /// Writes the state of every point, in id order, one line each: id, x, y, u_x, u_y, v_S, v_L,

@@ -30,6 +30,7 @@
 
 #include "BenchmarkScenes.hpp"
 #include "CommandLine.hpp"
+#include "PointFingerprint.hpp"
 #include "VerificationMain.hpp"
 #include "argine/init/Initialisation.hpp"
 #include "argine/input/DeckReader.hpp"
@@ -105,12 +106,13 @@ void quietBarrier(MPI_Comm comm) {
 }
 
 struct Timing {
-  double wall = 0;               ///< median wall time of the timed steps (s)
-  double cpu = 0;                ///< its process CPU time (s)
-  long long points = 0;          ///< this rank's points at the end
-  StepProfile profile;           ///< of the median repeat
-  long long exchange_bytes = 0;  ///< nodal exchange bytes this rank sent per step
-  long long migrated = 0;        ///< points moved between ranks in all steps
+  double wall = 0;                     ///< median wall time of the timed steps (s)
+  double cpu = 0;                      ///< its process CPU time (s)
+  long long points = 0;                ///< this rank's points at the end
+  StepProfile profile;                 ///< of the median repeat
+  long long exchange_bytes = 0;        ///< nodal exchange bytes this rank sent per step
+  long long migrated = 0;              ///< points moved between ranks in all steps
+  unsigned long long fingerprint = 0;  ///< additiveFingerprint of the final state, all ranks
 };
 
 Timing timeSteps(const Problem& problem, MPI_Comm comm, bool distributed, int warmup, int repeat) {
@@ -148,6 +150,8 @@ Timing timeSteps(const Problem& problem, MPI_Comm comm, bool distributed, int wa
     median.exchange_bytes = (solver.exchangeTraffic()->bytes - bytes_before) /
                             (static_cast<long long>(repeat) * problem.steps);
   median.migrated = solver.migratedPoints();
+  median.fingerprint = additiveFingerprint(points);
+  MPI_Allreduce(MPI_IN_PLACE, &median.fingerprint, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
   return median;
 }
 
@@ -198,6 +202,10 @@ bool runProblem(const Problem& problem, int warmup, int repeat) {
           "step\n",
           r, points[r], cpu[r], bytes[r]);
     std::printf("  points migrated between ranks: %lld\n", all.migrated);
+    // Equal = bit-for-bit the same final states (the last repeat's): between builds, or
+    // between 1 and N ranks with reproducible sums (otherwise they differ by round-off).
+    std::printf("  final state fingerprint: 1 rank %016llx, %d ranks %016llx\n", one.fingerprint,
+                size, all.fingerprint);
     std::printf("  profile, 1 rank:\n%s", one.profile.describe("    ").c_str());
     std::printf("  profile, rank 0 of %d:\n%s\n", size, all.profile.describe("    ").c_str());
     std::fflush(stdout);
