@@ -57,20 +57,99 @@ void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradient
       {nodalField(c.mass_gradient_i), nodalField(c.flux_weight_i), nodalField(c.wet_volume_i)});
 }
 
+namespace {
+
+/// Whether rank `rank`'s time step wins over rank `other`'s: the smaller step, on a tie the
+/// lower rank (the one rule of globalTimeStep and of the end-of-step reduction).
+bool stepWins(Real step, int rank, Real other_step, int other_rank) {
+  return step < other_step || (step == other_step && rank < other_rank);
+}
+
+/// The time-step candidate at the head of the end-of-step buffer, as doubles (the ints and
+/// the criterion's index are exact in a double).
+enum CandidateSlot : int {
+  kSlotStep = 0,
+  kSlotCritical,
+  kSlotAutomatic,
+  kSlotGoverning,
+  kSlotPoint,
+  kSlotPointId,
+  kSlotX,
+  kSlotY,
+  kSlotRank,
+  kSlotReady,
+  kCandidateSlots
+};
+
+void packCandidate(const TimeStepCandidate& next, int rank, Real* slot) {
+  const TimeStepChoice& c = next.choice;
+  slot[kSlotStep] = c.time_step;
+  slot[kSlotCritical] = c.critical_step;
+  slot[kSlotAutomatic] = c.automatic ? 1 : 0;
+  slot[kSlotGoverning] = static_cast<Real>(static_cast<int>(c.governing));
+  slot[kSlotPoint] = c.point;
+  slot[kSlotPointId] = c.point_id;
+  slot[kSlotX] = c.position[0];
+  slot[kSlotY] = c.position[1];
+  slot[kSlotRank] = rank;
+  slot[kSlotReady] = next.ready ? 1 : 0;
+}
+
+void unpackCandidate(const Real* slot, int rank, TimeStepCandidate& next) {
+  TimeStepChoice& c = next.choice;
+  c.time_step = slot[kSlotStep];
+  c.critical_step = slot[kSlotCritical];
+  c.automatic = slot[kSlotAutomatic] != 0;
+  c.governing = static_cast<CriterionKind>(static_cast<int>(slot[kSlotGoverning]));
+  c.point = static_cast<int>(slot[kSlotRank]) == rank ? static_cast<int>(slot[kSlotPoint]) : -1;
+  c.point_id = static_cast<int>(slot[kSlotPointId]);
+  c.position[0] = slot[kSlotX];
+  c.position[1] = slot[kSlotY];
+  next.ready = slot[kSlotReady] != 0;
+}
+
+/// The end-of-step reduction (MPI_User_function): the winning candidate (stepWins), ready
+/// only when both are, and the sum of every entry after the candidate. Commutative.
+void combineEndOfStep(void* in, void* inout, int* length, MPI_Datatype*) {
+  const Real* a = static_cast<const Real*>(in);
+  Real* b = static_cast<Real*>(inout);
+  const Real ready = a[kSlotReady] != 0 && b[kSlotReady] != 0 ? 1 : 0;
+  if (stepWins(a[kSlotStep], static_cast<int>(a[kSlotRank]), b[kSlotStep],
+               static_cast<int>(b[kSlotRank])))
+    std::copy(a, a + kCandidateSlots, b);
+  b[kSlotReady] = ready;
+  for (int k = kCandidateSlots; k < *length; ++k) b[k] += a[k];
+}
+
+MPI_Op endOfStepOp() {
+  static const MPI_Op op = [] {
+    MPI_Op created;
+    MPI_Op_create(&combineEndOfStep, /*commute=*/1, &created);
+    return created;
+  }();
+  return op;
+}
+
+}  // namespace
+
 void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
-                  std::vector<Real>& scratch) {
+                  TimeStepCandidate* next, std::vector<Real>& scratch) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
   Real* fixed[] = {&sums.kinetic_solid,       &sums.kinetic_liquid,
                    &sums.liquid_mass,         &sums.non_finite_state,
                    &sums.non_finite_velocity, &sums.lost,
                    &sums.changed_element,     &sums.emigrants};
   constexpr std::size_t kFixed = sizeof fixed / sizeof fixed[0];
-  const std::size_t n = kFixed + also.size();
+  const std::size_t head = kCandidateSlots, n = head + kFixed + also.size();
   if (scratch.size() < n) scratch.resize(n);
-  for (std::size_t k = 0; k < kFixed; ++k) scratch[k] = *fixed[k];
-  std::copy(also.begin(), also.end(), scratch.begin() + kFixed);
-  MPI_Allreduce(MPI_IN_PLACE, scratch.data(), static_cast<int>(n), MPI_DOUBLE, MPI_SUM, comm);
-  for (std::size_t k = 0; k < kFixed; ++k) *fixed[k] = scratch[k];
-  std::copy(scratch.begin() + kFixed, scratch.begin() + n, also.begin());
+  packCandidate(next ? *next : TimeStepCandidate{}, rank, scratch.data());
+  for (std::size_t k = 0; k < kFixed; ++k) scratch[head + k] = *fixed[k];
+  std::copy(also.begin(), also.end(), scratch.begin() + head + kFixed);
+  MPI_Allreduce(MPI_IN_PLACE, scratch.data(), static_cast<int>(n), MPI_DOUBLE, endOfStepOp(), comm);
+  if (next) unpackCandidate(scratch.data(), rank, *next);
+  for (std::size_t k = 0; k < kFixed; ++k) *fixed[k] = scratch[head + k];
+  std::copy(scratch.begin() + head + kFixed, scratch.begin() + n, also.begin());
 }
 
 void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo,
@@ -118,7 +197,7 @@ TimeStepChoice globalTimeStep(MPI_Comm comm, const TimeStepChoice& local) {
   MPI_Allgather(&local, sizeof local, MPI_BYTE, all.data(), sizeof local, MPI_BYTE, comm);
   int best = 0;
   for (int r = 1; r < size; ++r)
-    if (all[r].time_step < all[best].time_step) best = r;
+    if (stepWins(all[r].time_step, r, all[best].time_step, best)) best = r;
   TimeStepChoice choice = all[best];
   if (best != rank) choice.point = -1;
   return choice;

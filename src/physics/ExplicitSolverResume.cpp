@@ -13,7 +13,9 @@ ExplicitTwoPhaseSolver::ResumeState ExplicitTwoPhaseSolver::resumeState() const 
   state.diagnostics = diagnostics_;
   state.energy_scale = energy_scale_;
   state.stage_started = stage_started_;
-  state.time_step = time_step_.state();
+  // A step prepared at the end of the last one (several ranks) is not taken yet: the state
+  // before it, which a resumed run prepares again.
+  state.time_step = prepared_time_step_ ? state_before_candidate_ : time_step_.state();
   return state;
 }
 
@@ -22,6 +24,7 @@ void ExplicitTwoPhaseSolver::resume(const ResumeState& state) {
     throw std::logic_error("ExplicitTwoPhaseSolver::resume of a stage before beginStage");
   time_ = state.time;
   diagnostics_ = state.diagnostics;
+  prepared_time_step_ = false;  // chosen again by the next chooseTimeStep()
   if (state.stage_started) {
     energy_scale_ = state.energy_scale;
     time_step_.restore(state.time_step);

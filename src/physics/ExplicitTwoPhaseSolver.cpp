@@ -59,6 +59,8 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
 
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
   checkMaterialsForExplicitSolver(materials);
+  dropPreparedTimeStep();  // the criteria read the materials: evaluate them again
+  time_step_.markStale();
   table_ = MaterialTable(materials);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
@@ -86,6 +88,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.local_damping = stage.local_damping;
   momentum_.mass_scaling = stage.mass_scaling;
   velocity_blend_ = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
+  dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   momentum_.liquid_with_solid = stage.hold_liquid_pressure;
   gravity_ = stage.gravity;
@@ -132,9 +135,13 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
 const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
   PhaseTimer timer(profile_, StepPhase::TimeStep);
   if (!ranks_) return time_step_.next(points_, table_);
-  TimeStepChoice local;
-  local.time_step = local.critical_step = kmath::infinity();
-  if (points_.count > 0) local = time_step_.next(points_, table_);
+  if (prepared_time_step_) {  // chosen at the end of the last step (prepareNextTimeStep)
+    prepared_time_step_ = false;
+    global_choice_ = candidate_.choice;
+    return global_choice_;
+  }
+  const TimeStepChoice& local =
+      points_.count > 0 ? time_step_.next(points_, table_) : time_step_.nextWithoutPoints();
   global_choice_ = globalTimeStep(ranks_->comm(), local);
   return global_choice_;
 }
@@ -142,6 +149,7 @@ const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
 // ------------------------------------------------------------------ several ranks
 
 void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) {
+  dropPreparedTimeStep();
   ranks_ = &decomposition;
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
@@ -203,6 +211,11 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
   // updateLiquidState (SWRC, HCC), updatePointPosition (7.13); see PointUpdates.hpp.
   timed(StepPhase::Constitutive, [&] { updatePointStates(); });
   timed(StepPhase::Relocation, [&] { relocatePoints(); });  // step 8
+  if (ranks_) {  // the next step's candidate goes with the step's sums over the ranks
+    timed(StepPhase::TimeStep, [&] { prepareNextTimeStep(); });
+    timed(StepPhase::Relocation, [&] { completeStepOverRanks(); });
+  }
+  timed(StepPhase::Relocation, [&] { updateActiveNodes(); });
   if (sort_interval_ > 0 && (diagnostics_.step + 1) % sort_interval_ == 0)
     timed(StepPhase::Sort, [&] { sortPoints(); });
   time_ += dt;
@@ -375,59 +388,98 @@ void ExplicitTwoPhaseSolver::updatePointStates() {
 }
 
 void ExplicitTwoPhaseSolver::relocatePoints() {
-  RelocationCounts counts =
-      relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
-  if (ranks_) {
-    // The step's sums over the ranks in one reduction (the stability check reads them)...
-    EndOfStepSums sums;
-    sums.kinetic_solid = kinetic_.solid;
-    sums.kinetic_liquid = kinetic_.liquid;
-    sums.non_finite_velocity = kinetic_.non_finite_points;
-    sums.liquid_mass = totals_.liquid_mass;
-    sums.non_finite_state = totals_.non_finite_points;
-    sums.lost = counts.lost;
-    sums.changed_element = counts.changed_element;
-    sums.emigrants = countEmigrants(*ranks_, points_);
-    sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, reduction_scratch_);
-    if (reproducible_sums_) {              // the totals again, from the ranks' compensated pairs
-      std::vector<Real>& hi = totals_hi_;  // members: no allocation per step
-      std::vector<Real>& lo = totals_lo_;
-      hi.assign({kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi});
-      lo.assign({kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo});
-      if (!hydraulic_.empty()) {
-        hi.insert(hi.end(), flux_mass_hi_.begin(), flux_mass_hi_.end());
-        lo.insert(lo.end(), flux_mass_lo_.begin(), flux_mass_lo_.end());
-      }
-      sumCompensatedOverRanks(ranks_->comm(), hi, lo, reduction_scratch_);
-      sums.kinetic_solid = hi[0];
-      sums.kinetic_liquid = hi[1];
-      sums.liquid_mass = hi[2];
-      for (std::size_t c = 3; c < hi.size(); ++c)
-        boundary_flux_volumes_[c - 3] = hi[c] / reference_liquid_density_;
-    }
-    kinetic_.solid = sums.kinetic_solid;
-    kinetic_.liquid = sums.kinetic_liquid;
-    kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);
-    totals_.liquid_mass = sums.liquid_mass;
-    totals_.non_finite_points = static_cast<int>(sums.non_finite_state);
-    counts.lost = static_cast<int>(sums.lost);
-    counts.changed_element = static_cast<int>(sums.changed_element);
-    // ... then the points that entered another rank's element move there.
-    const MigrationCounts moved =
-        exchangePoints(*ranks_, points_, static_cast<long long>(sums.emigrants));
-    migrated_points_ += moved.total;
-    if (moved.sent > 0 || moved.received > 0) {
-      relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
-      time_step_.pointsReordered(points_);
-    }
+  relocation_ = relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+}
+
+void ExplicitTwoPhaseSolver::prepareNextTimeStep() {
+  // What chooseTimeStep() would do before the next step, done now on the relocated points so
+  // that its minimum over the ranks travels with the end-of-step reduction. The points are
+  // the same wherever they live (migration moves them unchanged), so the minimum is too.
+  state_before_candidate_ = time_step_.state();
+  candidate_.ready = true;
+  try {
+    candidate_.choice =
+        points_.count > 0 ? time_step_.next(points_, table_) : time_step_.nextWithoutPoints();
+  } catch (const RunError&) {
+    // No usable step here: chooseTimeStep() evaluates again on every rank and reports it.
+    time_step_.restore(state_before_candidate_);
+    candidate_.ready = false;
   }
-  diagnostics_.lost_points = counts.lost;
+}
+
+void ExplicitTwoPhaseSolver::completeStepOverRanks() {
+  RelocationCounts& counts = relocation_;
+  // The step's sums over the ranks in one reduction (the stability check reads them), with
+  // the next time step...
+  EndOfStepSums sums;
+  sums.kinetic_solid = kinetic_.solid;
+  sums.kinetic_liquid = kinetic_.liquid;
+  sums.non_finite_velocity = kinetic_.non_finite_points;
+  sums.liquid_mass = totals_.liquid_mass;
+  sums.non_finite_state = totals_.non_finite_points;
+  sums.lost = counts.lost;
+  sums.changed_element = counts.changed_element;
+  sums.emigrants = countEmigrants(*ranks_, points_);
+  sumOverRanks(ranks_->comm(), sums, boundary_flux_volumes_, &candidate_, reduction_scratch_);
+  if (candidate_.ready) {
+    prepared_time_step_ = true;
+  } else {
+    time_step_.restore(state_before_candidate_);  // the next chooseTimeStep() does it again
+  }
+  if (reproducible_sums_) {              // the totals again, from the ranks' compensated pairs
+    std::vector<Real>& hi = totals_hi_;  // members: no allocation per step
+    std::vector<Real>& lo = totals_lo_;
+    hi.assign({kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi});
+    lo.assign({kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo});
+    if (!hydraulic_.empty()) {
+      hi.insert(hi.end(), flux_mass_hi_.begin(), flux_mass_hi_.end());
+      lo.insert(lo.end(), flux_mass_lo_.begin(), flux_mass_lo_.end());
+    }
+    sumCompensatedOverRanks(ranks_->comm(), hi, lo, reduction_scratch_);
+    sums.kinetic_solid = hi[0];
+    sums.kinetic_liquid = hi[1];
+    sums.liquid_mass = hi[2];
+    for (std::size_t c = 3; c < hi.size(); ++c)
+      boundary_flux_volumes_[c - 3] = hi[c] / reference_liquid_density_;
+  }
+  kinetic_.solid = sums.kinetic_solid;
+  kinetic_.liquid = sums.kinetic_liquid;
+  kinetic_.non_finite_points = static_cast<int>(sums.non_finite_velocity);
+  totals_.liquid_mass = sums.liquid_mass;
+  totals_.non_finite_points = static_cast<int>(sums.non_finite_state);
+  counts.lost = static_cast<int>(sums.lost);
+  counts.changed_element = static_cast<int>(sums.changed_element);
+  // ... then the points that entered another rank's element move there.
+  const MigrationCounts moved =
+      exchangePoints(*ranks_, points_, static_cast<long long>(sums.emigrants));
+  migrated_points_ += moved.total;
+  if (moved.sent > 0 || moved.received > 0) {
+    relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
+    pointsReordered();
+  }
+}
+
+void ExplicitTwoPhaseSolver::updateActiveNodes() {
+  diagnostics_.lost_points = relocation_.lost;
   // No point changed element (the common case): the active nodes stay nodes_in_use_.
-  if (counts.changed_element > 0) {
+  if (relocation_.changed_element > 0) {
     nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());
     nodes_next_changed_ = true;
     free_boundary_stale_ = true;
   }
+}
+
+void ExplicitTwoPhaseSolver::pointsReordered() {
+  time_step_.pointsReordered(points_);
+  // The prepared step's point: an index on the rank holding it now.
+  if (prepared_time_step_ && candidate_.choice.point_id >= 0)
+    candidate_.choice.point = pointIndexOfId(points_, candidate_.choice.point_id);
+}
+
+void ExplicitTwoPhaseSolver::dropPreparedTimeStep() {
+  if (!prepared_time_step_) return;
+  time_step_.restore(state_before_candidate_);
+  prepared_time_step_ = false;
 }
 
 void ExplicitTwoPhaseSolver::sortPoints() {
@@ -437,7 +489,7 @@ void ExplicitTwoPhaseSolver::sortPoints() {
   // nodes are the same set.
   sortPointsByElement(points_);
   relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
-  time_step_.pointsReordered(points_);
+  pointsReordered();
   profile_.sorts += 1;
 }
 

@@ -191,9 +191,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
   return choice;
 }
 
-void TimeStepControl::pointsReordered(const MaterialPoints& points) {
-  if (choice_.point < 0) return;
-  const int id = choice_.point_id;
+int pointIndexOfId(const MaterialPoints& points, int id) {
   const auto id_p = points.id;
   int index = -1;
   Kokkos::parallel_reduce(
@@ -202,7 +200,29 @@ void TimeStepControl::pointsReordered(const MaterialPoints& points) {
         if (id_p(p) == id && p > found) found = p;
       },
       Kokkos::Max<int>(index));
-  choice_.point = index;
+  return index >= 0 ? index : -1;  // (the reducer starts from the lowest int, not -1)
+}
+
+void TimeStepControl::pointsReordered(const MaterialPoints& points) {
+  if (choice_.point < 0) return;
+  choice_.point = pointIndexOfId(points, choice_.point_id);
+}
+
+const TimeStepChoice& TimeStepControl::nextWithoutPoints() {
+  if (!automatic_) {
+    choice_ = TimeStepChoice{};
+    choice_.time_step = fixed_step_;
+    return choice_;
+  }
+  if (stale_ || calls_since_update_ >= update_interval_) {
+    choice_ = TimeStepChoice{};
+    choice_.automatic = true;
+    choice_.time_step = choice_.critical_step = kmath::infinity();
+    stale_ = false;
+    calls_since_update_ = 0;
+  }
+  ++calls_since_update_;
+  return choice_;
 }
 
 const TimeStepChoice& TimeStepControl::next(const MaterialPoints& points,

@@ -228,6 +228,77 @@ TEST(DistributedSolver, SeepageWithReproducibleSumsEqualsOneRankBitForBit) {
   expectSameAsOneRank(scene, 0.0);
 }
 
+/// Each step's time step as chosen (dt, critical step, governing criterion), the time-step
+/// control's carried state after the step, and the number of ranks that hold the governing
+/// point (its index there naming that point's id); the materials stiffened 4x after
+/// `change_at` steps.
+struct TimeStepRecord {
+  std::vector<Real> steps;   ///< dt, critical step, governing criterion, per step
+  std::vector<int> carried;  ///< calls since the last evaluation, stale, per step
+  std::vector<int> holders;  ///< ranks holding the governing point, per step
+  int misnamed = 0;          ///< steps where the index held does not name the point id
+};
+
+TimeStepRecord recordTimeSteps(Scene scene, bool distributed, int change_at) {
+  MaterialPoints copy;
+  copy.allocate(scene.points.count);
+#define ARGINE_COPY_FIELD(name) Kokkos::deep_copy(copy.name, scene.points.name);
+  ARGINE_MATERIAL_POINT_FIELDS(ARGINE_COPY_FIELD)
+#undef ARGINE_COPY_FIELD
+  ExplicitTwoPhaseSolver solver(scene.mesh, copy, scene.materials);
+  solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
+  solver.setReproducibleSums(scene.reproducible_sums);
+  std::unique_ptr<RankDecomposition> ranks;
+  if (distributed) {
+    ranks = std::make_unique<RankDecomposition>(MPI_COMM_WORLD, scene.mesh, scene.weights);
+    solver.distribute(*ranks);
+  }
+  const MPI_Comm comm = distributed ? MPI_COMM_WORLD : MPI_COMM_SELF;
+  TimeStepRecord record;
+  solver.beginStage(scene.stages.at(0));
+  for (int k = 0; k < scene.steps_per_stage; ++k) {
+    if (k == change_at) {
+      std::vector<MaterialSpec> stiffer = scene.materials;
+      for (auto& material : stiffer) material.solid.youngs_modulus *= 4;
+      solver.setMaterials(stiffer);
+    }
+    const TimeStepChoice choice = solver.chooseTimeStep();
+    record.steps.insert(record.steps.end(), {choice.time_step, choice.critical_step,
+                                             static_cast<Real>(choice.governing)});
+    int holds = choice.point >= 0 ? 1 : 0;
+    if (choice.point >= 0 && copy.id(choice.point) != choice.point_id) ++record.misnamed;
+    MPI_Allreduce(MPI_IN_PLACE, &holds, 1, MPI_INT, MPI_SUM, comm);
+    record.holders.push_back(holds);
+    solver.step(choice.time_step);
+    const TimeStepControl::State state = solver.resumeState().time_step;
+    record.carried.insert(record.carried.end(), {state.calls_since_update, state.stale ? 1 : 0});
+  }
+  return record;
+}
+
+TEST(DistributedSolver, TimeStepsAreTheOneRankStepsAcrossMigrationSortingAndMaterialChanges) {
+  // On several ranks the next step is chosen at the end of the last one, with its sums; it
+  // must be the one-rank step (bit for bit with reproducible sums), follow its point when
+  // points are sorted or migrate, be chosen again after setMaterials, and leave the
+  // time-step control's carried state (what a checkpoint saves) as one rank leaves it.
+  Scene scene = slumpingSlope(0.05);
+  scene.reproducible_sums = true;
+  scene.stages.at(0).time_step.update_interval = 3;
+  const int change_at = 400;
+  const TimeStepRecord one = recordTimeSteps(scene, false, change_at);
+  const TimeStepRecord all = recordTimeSteps(scene, true, change_at);
+  ASSERT_EQ(one.steps.size(), all.steps.size());
+  for (std::size_t k = 0; k < one.steps.size(); ++k)
+    ASSERT_EQ(one.steps[k], all.steps[k]) << "step " << k / 3 << ", value " << k % 3;
+  EXPECT_EQ(one.carried, all.carried);
+  // the stiffer material shortened the step at once (CFL ~ 1/sqrt(E)), update interval or not
+  const TimeStepRecord unchanged = recordTimeSteps(scene, false, -1);
+  EXPECT_LT(one.steps[3 * change_at], 0.8 * unchanged.steps[3 * change_at]);
+  for (std::size_t k = 0; k < all.holders.size(); ++k)
+    ASSERT_EQ(all.holders[k], 1) << "step " << k << ": ranks holding the governing point";
+  EXPECT_EQ(all.misnamed, 0);
+}
+
 TEST(DistributedSolver, MigratingPointsWithReproducibleSumsEqualOneRankBitForBit) {
   // Points cross the rank border (migrated, appended in another order) and are sorted, in a
   // damped slump (the damping amplifies any difference): the compensated sums do not depend

@@ -8,8 +8,10 @@
 ///                                    conditions only)
 ///   after the momentum remap         sumMomentaAtSharedNodes (4)
 ///   end of the step                  one Allreduce (EndOfStepSums: energies, liquid mass,
-///                                    invalid points, relocation and migration counts)
-///   time step                        globalTimeStep (min over ranks, one Allgather)
+///                                    invalid points, relocation and migration counts,
+///                                    and the next time step: min over the ranks)
+///   time step                        none after a step (it came with the end of the step);
+///                                    else globalTimeStep (one Allgather)
 ///   after a point changed element    globalActiveElements (the free boundary)
 ///   relocation                       migratePoints (parallel/PointMigration.hpp)
 
@@ -18,6 +20,7 @@
 #include "argine/core/Types.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
+#include "argine/physics/TimeStepControl.hpp"
 
 namespace argine {
 
@@ -26,7 +29,6 @@ struct GridFields;
 struct KineticTotals;
 struct MaterialPoints;
 struct PointTotals;
-struct TimeStepChoice;
 
 /// Completes the P2G of mapPointsToGrid at the shared nodes: masses, drag, liquid volume,
 /// momenta and forces, in one message per neighbour.
@@ -50,10 +52,21 @@ struct EndOfStepSums {
   Real non_finite_state = 0, non_finite_velocity = 0;
   Real lost = 0, changed_element = 0, emigrants = 0;  // counts, exact in a double
 };
+/// The next step's time-step choice of this rank, carried by the end-of-step reduction so
+/// that choosing the next step needs no collective of its own.
+struct TimeStepCandidate {
+  /// In: this rank's choice (time_step = infinity without points). Out: the smallest step
+  /// over the ranks (ties: the lowest rank, as globalTimeStep), with the choice of the rank
+  /// that gave it; `point` is an index on that rank only, -1 elsewhere.
+  TimeStepChoice choice;
+  /// In: this rank evaluated its choice. Out: every rank did (else choice is meaningless).
+  bool ready = false;
+};
 /// Sums `sums` and `also` (e.g. the liquid volume through each hydraulic condition) over
-/// the ranks in one Allreduce, through `scratch` (grown, never shrunk: no allocation per step).
+/// the ranks and reduces `next` (when given) in ONE Allreduce, through `scratch` (grown,
+/// never shrunk: no allocation per step).
 void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
-                  std::vector<Real>& scratch);
+                  TimeStepCandidate* next, std::vector<Real>& scratch);
 /// Reproducible sums: entry k of every rank's compensated value (hi[k], lo[k]) added in rank
 /// order with TwoSum (transfer/CompensatedSum.hpp) and rounded once, into hi[k] on every
 /// rank (lo unchanged). Collective (one Allgather of both vectors, through `scratch`: grown,

@@ -65,6 +65,7 @@
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/parallel/NodalExchange.hpp"
+#include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/LiquidHeadStabilisation.hpp"
 #include "argine/physics/LiquidOutflowLimit.hpp"
@@ -122,6 +123,7 @@ class ExplicitTwoPhaseSolver {
   /// Replaces the material parameters (a stage that changes e.g. the cohesion); the point
   /// state is kept, except S_L and k, re-evaluated from the new curves at each point's p_L.
   /// The phase model of a material must not change (points keep their liquid or lack of it).
+  /// The next chooseTimeStep() evaluates the criteria again.
   void setMaterials(const std::vector<MaterialSpec>& materials);
 
   /// Starts a stage: solver kind (Explicit, QuasiStatic or FixedSkeleton; InputError for
@@ -255,8 +257,15 @@ class ExplicitTwoPhaseSolver {
   void accountBoundaryFluxes(Real dt);
   void updatePointStates();
   void relocatePoints();
+  void prepareNextTimeStep();    // several ranks: this rank's candidate for the next step
+  void completeStepOverRanks();  // several ranks: the step's sums, the next step, migration
+  void updateActiveNodes();
   void sortPoints();
   void checkStability(Real dt);
+  /// The points were permuted or moved between ranks: choices follow their point by id.
+  void pointsReordered();
+  /// Forgets a step prepared at the end of the last step (the state it came from changed).
+  void dropPreparedTimeStep();
 
   const Mesh& mesh_;
   MaterialPoints& points_;
@@ -315,9 +324,13 @@ class ExplicitTwoPhaseSolver {
   Kokkos::View<const int*, MemSpace> alwaysActiveNodes() const;  ///< shared nodes, or none
   const RankDecomposition* ranks_ = nullptr;
   std::unique_ptr<NodalExchange> exchange_;
-  ActiveNodes nodes_owned_;              ///< active nodes this rank owns (sums over nodes)
-  TimeStepChoice global_choice_;         ///< the last step chosen over all ranks
-  std::vector<Real> reduction_scratch_;  ///< the end-of-step Allreduce buffer
+  ActiveNodes nodes_owned_;          ///< active nodes this rank owns (sums over nodes)
+  TimeStepChoice global_choice_;     ///< the last step chosen over all ranks
+  RelocationCounts relocation_;      ///< of the last relocation (summed over the ranks)
+  TimeStepCandidate candidate_;      ///< this rank's next step, then the ranks' minimum
+  bool prepared_time_step_ = false;  ///< candidate_ is the next step (not yet taken)
+  TimeStepControl::State state_before_candidate_;  ///< time_step_ before candidate_
+  std::vector<Real> reduction_scratch_;            ///< the end-of-step Allreduce buffer
   long long migrated_points_ = 0;
 };
 

@@ -43,6 +43,10 @@ struct TimeStepChoice {
   Real position[kDim] = {0, 0};                     ///< its position (m)
 };
 
+/// The index of the point with permanent id `id` (-1 when none of `points` has it): a
+/// choice's point after the points were permuted or moved to another rank.
+int pointIndexOfId(const MaterialPoints& points, int id);
+
 class TimeStepControl {
  public:
   TimeStepControl() = default;
@@ -59,9 +63,18 @@ class TimeStepControl {
   /// minimum critical step is zero (naming the criterion and the point).
   const TimeStepChoice& next(const MaterialPoints& points, const MaterialTable& table);
 
+  /// next() on one of several ranks that holds no points: no step to offer (time_step and
+  /// critical_step infinite), but the calls are counted as next() counts them, so that every
+  /// rank evaluates at the same calls (and the minimum over the ranks is the one-rank step).
+  const TimeStepChoice& nextWithoutPoints();
+
   /// The minimum critical step over the points and selected criteria (no safety factor),
   /// with the governing criterion and point, evaluated now.
   TimeStepChoice evaluate(const MaterialPoints& points, const MaterialTable& table) const;
+
+  /// The next call to next() evaluates the criteria again, whatever the update interval
+  /// (e.g. the materials changed: a cached step may no longer be stable).
+  void markStale() { stale_ = true; }
 
   /// Points were permuted (sorted): the last choice's point index follows its id.
   void pointsReordered(const MaterialPoints& points);
