@@ -31,11 +31,14 @@ KOKKOS_INLINE_FUNCTION void rotateStressBySpin(Real w, Real stress[kStressCompon
   if (w == 0) return;
   const Real q = 1 + w * w / 4;
   const Real c = (1 - w * w / 4) / q, s = w / q;
-  const Real xx = stress[0], yy = stress[1], xy = stress[3];
-  // Q sigma Q^T with Q = [[c, s], [-s, c]].
-  stress[0] = c * c * xx + 2 * c * s * xy + s * s * yy;
-  stress[1] = s * s * xx - 2 * c * s * xy + c * c * yy;
-  stress[3] = c * s * (yy - xx) + (c * c - s * s) * xy;
+  const Real xx = stress[0], yy = stress[1], zz = stress[2], xy = stress[3];
+  // Q sigma Q^T with Q = [[c, s], [-s, c]]. All four components are written together (zz
+  // unchanged): a caller that reads the stress back as one vector then finds it in one
+  // store, not three scalar stores around an older value (a store-forwarding stall).
+  const Real rotated[kStressComponents] = {c * c * xx + 2 * c * s * xy + s * s * yy,
+                                           s * s * xx - 2 * c * s * xy + c * c * yy, zz,
+                                           c * s * (yy - xx) + (c * c - s * s) * xy};
+  for (int i = 0; i < kStressComponents; ++i) stress[i] = rotated[i];
 }
 
 }  // namespace argine
