@@ -200,6 +200,31 @@ KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n,
 /// `factors` = mohrCoulombFactors(strength). Writes the principal plastic strain increment
 /// D^-1 (sigma_trial - sigma) to plastic_strain and returns the region (kMohrCoulombElastic,
 /// Surface or Apex).
+/// The admissibility test of returnToMohrCoulomb for SORTED principal trial stresses: the
+/// tension cut-off where it matters, the tolerance of every test of the return (1e-12 x the
+/// stress scale), and whether the trial lies outside the surface (F1 or, with the cut-off,
+/// T1 above the tolerance). One place, so that a caller may test before calling the return.
+struct MohrCoulombTrialCheck {
+  bool cutoff;
+  Real tolerance;
+  bool outside;
+};
+
+KOKKOS_INLINE_FUNCTION MohrCoulombTrialCheck checkMohrCoulombTrial(
+    const MohrCoulombStrength& strength, const MohrCoulombFactors& factors, const Real sigma[3]) {
+  MohrCoulombTrialCheck check;
+  // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
+  check.cutoff = strength.tension_cutoff && strength.tensile_strength < factors.apex;
+  const Real scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
+                     strength.cohesion +
+                     (check.cutoff ? kmath::fabs(strength.tensile_strength) : 0);
+  check.tolerance = 1e-12 * (scale > 0 ? scale : 1);
+  const Real yield = factors.k * sigma[0] - sigma[2] - factors.sigma_c;  // mohrCoulombYield
+  check.outside = yield > check.tolerance ||
+                  (check.cutoff && sigma[0] - strength.tensile_strength > check.tolerance);
+  return check;
+}
+
 KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength,
                                                const MohrCoulombFactors& factors, Real lambda,
                                                Real shear_modulus, Real sigma[3],
@@ -207,15 +232,10 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
   using namespace mc_detail;
   for (int c = 0; c < 3; ++c) plastic_strain[c] = 0;
   const Real apex = factors.apex;
-  // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
-  const bool cutoff = strength.tension_cutoff && strength.tensile_strength < apex;
-  const Real scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
-                     strength.cohesion + (cutoff ? kmath::fabs(strength.tensile_strength) : 0);
-  const Real tolerance = 1e-12 * (scale > 0 ? scale : 1);
-  const Real yield = factors.k * sigma[0] - sigma[2] - factors.sigma_c;  // mohrCoulombYield
-  const bool outside =
-      yield > tolerance || (cutoff && sigma[0] - strength.tensile_strength > tolerance);
-  if (!outside) return kMohrCoulombElastic;
+  const MohrCoulombTrialCheck check = checkMohrCoulombTrial(strength, factors, sigma);
+  if (!check.outside) return kMohrCoulombElastic;
+  const bool cutoff = check.cutoff;
+  const Real tolerance = check.tolerance;
 
   Plane planes[kPlaneCount];
   makePlanes(strength, factors, planes);
@@ -331,12 +351,14 @@ KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(Real lambda, Real shear_modul
   } else {
     sigma[0] = major, sigma[1] = minor, sigma[2] = zz, z_slot = 2;
   }
+  // Most points are inside the surface: test here, and call the return (large, not inlined)
+  // only for the others.
+  if (!checkMohrCoulombTrial(strength, factors, sigma).outside) {
+    for (int i = 0; i < kStressComponents; ++i) stress[i] = trial[i];
+    return kMohrCoulombElastic;
+  }
   Real plastic[3];
   const int region = returnToMohrCoulomb(strength, factors, lambda, shear_modulus, sigma, plastic);
-  if (region == kMohrCoulombElastic) {
-    for (int i = 0; i < kStressComponents; ++i) stress[i] = trial[i];
-    return region;
-  }
   Real new_major, new_minor, new_zz;
   if (z_slot == 0) {
     new_zz = sigma[0], new_major = sigma[1], new_minor = sigma[2];
