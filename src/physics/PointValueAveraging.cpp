@@ -1,6 +1,7 @@
 #include "argine/physics/PointValueAveraging.hpp"
 
 #include <Kokkos_ScatterView.hpp>
+#include <type_traits>
 
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -39,14 +40,27 @@ void AveragingScratch::compensate(bool on) {
 
 namespace {
 
-/// The averaging's element and node sums of w q and w per channel, plain or compensated.
-template <bool kCompensated>
+/// Calls f(std::integral_constant<int, n>) with n = `channels` for the counts the solver uses
+/// (1 and 3: the loops over the channels unrolled), else n = 0 (use `channels` at run time).
+template <class Function>
+void withChannelCount(int channels, Function&& f) {
+  if (channels == 1)
+    f(std::integral_constant<int, 1>{});
+  else if (channels == 3)
+    f(std::integral_constant<int, 3>{});
+  else
+    f(std::integral_constant<int, 0>{});
+}
+
+/// The averaging's element and node sums of w q and w per channel, plain or compensated;
+/// kChannels = s.channels() (0: read at run time).
+template <bool kCompensated, int kChannels>
 void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
                         const AveragingScratch& s) {
   const auto element_p = points.element;
   const auto shape_p = shapes.shape_p;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
-  const int channels = s.channels();
+  const int channels = kChannels > 0 ? kChannels : s.channels();
   const auto mode_pc = s.mode_pc;
   const auto weight_p = s.weight_p;
   const auto value_pc = s.value_pc;
@@ -84,48 +98,19 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
   KE::contribute(node_sums, node_sv);
 }
 
-}  // namespace
-
-void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
-                        const ActiveNodes& active, AveragingScratch& scratch,
-                        NodalExchange* exchange) {
+/// value_pc(p, c) <- the element or nodal average of channel c at every point in it;
+/// kChannels as in scatterAverageSums.
+template <int kChannels>
+void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
+                    const AveragingScratch& scratch) {
   const int count = points.count;
   const auto element_p = points.element;
   const auto shape_p = shapes.shape_p;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
-  const auto active_nodes = active.nodes();
-  const int columns = 2 * scratch.channels();
   const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
-  Kokkos::deep_copy(element_sums, 0.0);
-  Kokkos::parallel_for(
-      "averaging_zero_nodes", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j) {
-        for (int k = 0; k < columns; ++k) node_sums(active_nodes(j), k) = 0;
-      });
-  if (scratch.compensated())  // lo is zero: the last call folded it (below)
-    scatterAverageSums<true>(points, shapes, scratch);
-  else
-    scatterAverageSums<false>(points, shapes, scratch);
-  // Several ranks: a node shared with another rank also has that rank's points in its sums.
-  // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
-  if (scratch.compensated()) {
-    if (exchange) exchange->sumCompensated({nodalField(node_sums)}, {nodalField(scratch.node_lo)});
-    foldCompensatedSums(active, node_sums, scratch.node_lo);
-    const auto element_lo = scratch.element_lo;
-    Kokkos::parallel_for(
-        "averaging_fold_elements", Kokkos::RangePolicy<ExecSpace>(0, element_sums.extent(0)),
-        KOKKOS_LAMBDA(const int e) {
-          for (int k = 0; k < columns; ++k) {
-            element_sums(e, k) += element_lo(e, k);
-            element_lo(e, k) = 0;
-          }
-        });
-  } else if (exchange) {
-    exchange->sum({nodalField(node_sums)});
-  }
   const auto mode_pc = scratch.mode_pc;
   const auto value_pc = scratch.value_pc;
-  const int channels = scratch.channels();
+  const int channels = kChannels > 0 ? kChannels : scratch.channels();
   Kokkos::parallel_for(
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int e = element_p(p);
@@ -146,6 +131,47 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
           value_pc(p, c) = average;
         }
       });
+}
+
+}  // namespace
+
+void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
+                        const ActiveNodes& active, AveragingScratch& scratch,
+                        NodalExchange* exchange) {
+  const auto active_nodes = active.nodes();
+  const int columns = 2 * scratch.channels();
+  const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
+  Kokkos::deep_copy(element_sums, 0.0);
+  Kokkos::parallel_for(
+      "averaging_zero_nodes", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        for (int k = 0; k < columns; ++k) node_sums(active_nodes(j), k) = 0;
+      });
+  withChannelCount(scratch.channels(), [&](auto n) {
+    if (scratch.compensated())  // lo is zero: the last call folded it (below)
+      scatterAverageSums<true, decltype(n)::value>(points, shapes, scratch);
+    else
+      scatterAverageSums<false, decltype(n)::value>(points, shapes, scratch);
+  });
+  // Several ranks: a node shared with another rank also has that rank's points in its sums.
+  // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
+  if (scratch.compensated()) {
+    if (exchange) exchange->sumCompensated({nodalField(node_sums)}, {nodalField(scratch.node_lo)});
+    foldCompensatedSums(active, node_sums, scratch.node_lo);
+    const auto element_lo = scratch.element_lo;
+    Kokkos::parallel_for(
+        "averaging_fold_elements", Kokkos::RangePolicy<ExecSpace>(0, element_sums.extent(0)),
+        KOKKOS_LAMBDA(const int e) {
+          for (int k = 0; k < columns; ++k) {
+            element_sums(e, k) += element_lo(e, k);
+            element_lo(e, k) = 0;
+          }
+        });
+  } else if (exchange) {
+    exchange->sum({nodalField(node_sums)});
+  }
+  withChannelCount(scratch.channels(),
+                   [&](auto n) { gatherAverages<decltype(n)::value>(points, shapes, scratch); });
 }
 
 }  // namespace argine
