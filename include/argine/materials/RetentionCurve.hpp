@@ -29,9 +29,10 @@ KOKKOS_INLINE_FUNCTION Real effectiveSaturation(const RetentionSpec& spec, Real 
 }
 
 namespace detail {
-/// Van Genuchten's x = s/p_ref, m = 1/(1-lambda) and x^m: the pow that S_L and dS_L/ds share.
+/// Van Genuchten's x = s/p_ref, m = 1/(1-lambda), x^m and (1 + x^m)^(-lambda): the two pows
+/// that S_L and dS_L/ds share.
 struct VanGenuchtenTerms {
-  Real m, x, xm;
+  Real m, x, xm, power;
 };
 KOKKOS_INLINE_FUNCTION VanGenuchtenTerms vanGenuchtenTerms(const RetentionSpec& spec,
                                                            Real suction) {
@@ -39,19 +40,21 @@ KOKKOS_INLINE_FUNCTION VanGenuchtenTerms vanGenuchtenTerms(const RetentionSpec& 
   t.m = 1 / (1 - spec.lambda);
   t.x = suction / spec.reference_pressure;
   t.xm = kmath::pow(t.x, t.m);
+  t.power = kmath::pow(1 + t.xm, -spec.lambda);
   return t;
 }
 /// Eq. 4.28: S_L = S_min + (S_max - S_min) (1 + x^m)^(-lambda).
 KOKKOS_INLINE_FUNCTION Real vanGenuchtenSaturation(const RetentionSpec& spec,
                                                    const VanGenuchtenTerms& t) {
   const Real range = spec.saturation_max - spec.saturation_min;
-  return spec.saturation_min + range * kmath::pow(1 + t.xm, -spec.lambda);
+  return spec.saturation_min + range * t.power;
 }
-/// dS_e/ds = -lambda m x^(m-1) (1 + x^m)^(-lambda-1) / p_ref, times S_max - S_min.
+/// dS_e/ds = -lambda m x^(m-1) (1 + x^m)^(-lambda-1) / p_ref, times S_max - S_min, with
+/// (1 + x^m)^(-lambda-1) = (1 + x^m)^(-lambda) / (1 + x^m) (no third pow).
 KOKKOS_INLINE_FUNCTION Real vanGenuchtenSlope(const RetentionSpec& spec,
                                               const VanGenuchtenTerms& t) {
   const Real range = spec.saturation_max - spec.saturation_min;
-  return -range * spec.lambda * t.m * (t.xm / t.x) * kmath::pow(1 + t.xm, -spec.lambda - 1) /
+  return -range * spec.lambda * t.m * (t.xm / t.x) * (t.power / (1 + t.xm)) /
          spec.reference_pressure;
 }
 }  // namespace detail
@@ -90,8 +93,8 @@ KOKKOS_INLINE_FUNCTION Real saturationSuctionDerivative(const RetentionSpec& spe
 }
 
 /// S_L(s) and dS_L/ds(s) together, each to the bit as saturation() and
-/// saturationSuctionDerivative() give it; van Genuchten's x^m is taken once (the Newton
-/// iteration of the liquid pressure needs both at every iterate).
+/// saturationSuctionDerivative() give it; van Genuchten's two pows are taken once (the
+/// Newton iteration of the liquid pressure needs both at every iterate).
 struct SaturationAndSlope {
   Real saturation;
   Real slope;  ///< dS_L/ds (1/Pa), <= 0
