@@ -99,29 +99,22 @@ KOKKOS_INLINE_FUNCTION Real liquidMassAfterFlux(bool complete, Real mass, Real v
 }
 
 /// The liquid pressure p_L (Pa) at which S_L(p_L) rho_L(p_L) equals the liquid content
-/// `content` = M_L / (n V) (kg/m^3), and rho_L there (4.13). Saturated (S_L = 1): p_L =
-/// K_L ln(content / rho_L0), the inverse of 4.13, and rho_L = content; unsaturated at
-/// content >= S_max rho_L0 (no suction) the same with S_max rho_L0, rho_L = content / S_max.
-/// Otherwise Newton iterations from `guess` on the increasing function S_L rho_L, whose
-/// derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12), and rho_L(p_L).
+/// `content` = M_L / (n V) (kg/m^3). Saturated (S_L = 1): p_L = K_L ln(content / rho_L0),
+/// the inverse of 4.13; unsaturated at content >= S_max rho_L0 (no suction) the same with
+/// S_max rho_L0. Otherwise Newton iterations from `guess` on the increasing function
+/// S_L rho_L, whose derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12).
 /// A non-positive content gives NaN (the run's non-finite check then stops it).
-struct LiquidPressure {
-  Real pressure;  ///< p_L (Pa)
-  Real density;   ///< rho_L (kg/m^3)
-};
-
-KOKKOS_INLINE_FUNCTION LiquidPressure pressureOfLiquidContent(const PointMaterial& material,
-                                                              Real content, Real guess) {
+KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& material, Real content,
+                                                    Real guess) {
   const Real bulk = material.liquid.bulk_modulus;
-  if (!(content > 0)) return {kmath::quietNaN(), kmath::quietNaN()};
+  if (!(content > 0)) return kmath::quietNaN();
   if (material.phase != PhaseModel::Unsaturated)
-    return {bulk * kmath::log(content / material.liquid.density), content};
+    return bulk * kmath::log(content / material.liquid.density);
   // At or above the content of the pore space filled at p_L = 0 the root is at p_L >= 0,
   // where there is no suction and S_L = S_max: the closed form of 4.13, no iteration (most
   // points below the phreatic surface).
-  const Real saturation_max = material.retention.saturation_max;
-  const Real filled = saturation_max * material.liquid.density;
-  if (content >= filled) return {bulk * kmath::log(content / filled), content / saturation_max};
+  const Real filled = material.retention.saturation_max * material.liquid.density;
+  if (content >= filled) return bulk * kmath::log(content / filled);
   // Safeguarded Newton: S_L rho_L - content is increasing in p_L, so every iterate brackets
   // the root from one side; a Newton step leaving the bracket (the SWRC has a kink at s = 0)
   // is replaced by bisection.
@@ -146,7 +139,7 @@ KOKKOS_INLINE_FUNCTION LiquidPressure pressureOfLiquidContent(const PointMateria
     pressure = next;
     if (change <= 1e-14 * bulk) break;
   }
-  return {pressure, liquidDensity(material.liquid, pressure)};
+  return pressure;
 }
 
 }  // namespace argine

@@ -69,9 +69,11 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int 
     const Real ds_ds = saturationSuctionDerivative(material.retention, suctionOfPressure(pressure));
     guess += (content - s * rho) / liquidContentSlope(rho, s, ds_ds, material.liquid.bulk_modulus);
   }
-  const LiquidPressure next = pressureOfLiquidContent(material, content, guess);
-  v.points.pressure_liquid(p) = next.pressure;
-  v.points.density_liquid(p) = next.density;  // 4.13
+  const Real next = pressureOfLiquidContent(material, content, guess);
+  v.points.pressure_liquid(p) = next;
+  // 4.13; saturated, S_L = 1 and the content is the density itself.
+  v.points.density_liquid(p) =
+      material.phase == PhaseModel::Unsaturated ? liquidDensity(material.liquid, next) : content;
   v.points.mass_liquid(p) = mass;
 }
 
