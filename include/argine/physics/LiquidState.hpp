@@ -100,9 +100,8 @@ KOKKOS_INLINE_FUNCTION Real liquidMassAfterFlux(bool complete, Real mass, Real v
 
 /// The liquid pressure p_L (Pa) at which S_L(p_L) rho_L(p_L) equals the liquid content
 /// `content` = M_L / (n V) (kg/m^3). Saturated (S_L = 1): p_L = K_L ln(content / rho_L0),
-/// the inverse of 4.13; unsaturated at content >= S_max rho_L0 (no suction) the same with
-/// S_max rho_L0. Otherwise Newton iterations from `guess` on the increasing function
-/// S_L rho_L, whose derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12).
+/// the inverse of 4.13. Unsaturated: Newton iterations from `guess` on the increasing
+/// function S_L rho_L, whose derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12).
 /// A non-positive content gives NaN (the run's non-finite check then stops it).
 KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& material, Real content,
                                                     Real guess) {
@@ -110,11 +109,6 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
   if (!(content > 0)) return kmath::quietNaN();
   if (material.phase != PhaseModel::Unsaturated)
     return bulk * kmath::log(content / material.liquid.density);
-  // At or above the content of the pore space filled at p_L = 0 the root is at p_L >= 0,
-  // where there is no suction and S_L = S_max: the closed form of 4.13, no iteration (most
-  // points below the phreatic surface).
-  const Real filled = material.retention.saturation_max * material.liquid.density;
-  if (content >= filled) return bulk * kmath::log(content / filled);
   // Safeguarded Newton: S_L rho_L - content is increasing in p_L, so every iterate brackets
   // the root from one side; a Newton step leaving the bracket (the SWRC has a kink at s = 0)
   // is replaced by bisection.
