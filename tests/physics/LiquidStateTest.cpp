@@ -1,0 +1,56 @@
+// The liquid pressure of a point from its liquid content (physics/LiquidState.hpp,
+// pressureOfLiquidContent): the inverse of 4.13 when saturated; the root of
+// S_L(s) rho_L(p_L) = content for an unsaturated material, on either side of p_L = 0.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "argine/physics/LiquidState.hpp"
+
+namespace argine {
+namespace {
+
+constexpr Real kBulk = 2.2e9, kDensity = 1000;
+
+PointMaterial material(PhaseModel phase) {
+  PointMaterial m;
+  m.phase = phase;
+  m.liquid.density = kDensity;
+  m.liquid.bulk_modulus = kBulk;
+  m.retention.model = RetentionModel::VanGenuchten;
+  m.retention.reference_pressure = 10e3;
+  m.retention.lambda = 0.5;
+  m.retention.saturation_min = 0.05;
+  m.retention.saturation_max = 0.95;
+  return m;
+}
+
+/// S_L rho_L at p_L: the content a pressure stores (4.13 and the SWRC).
+Real contentAt(const PointMaterial& m, Real pressure) {
+  return saturation(m.retention, suctionOfPressure(pressure)) * liquidDensity(m.liquid, pressure);
+}
+
+TEST(LiquidState, SaturatedPressureIsTheInverseOf413) {
+  const PointMaterial m = material(PhaseModel::Saturated);
+  for (const Real p : {-50e3, 0.0, 2e5, 3e6}) {
+    const Real content = kDensity * std::exp(p / kBulk);
+    EXPECT_NEAR(pressureOfLiquidContent(m, content, 0.0), p, 1e-6) << p;
+  }
+  EXPECT_TRUE(std::isnan(pressureOfLiquidContent(m, 0.0, 0.0)));
+}
+
+TEST(LiquidState, UnsaturatedPressureIsTheRootOnEitherSideOfZero) {
+  const PointMaterial m = material(PhaseModel::Unsaturated);
+  // p_L >= 0 (S_L = S_max) and suctions from 1 Pa to 80 kPa, from guesses on both sides:
+  // the iteration stops when a step is below 1e-14 K_L, so the root to about that.
+  for (const Real p : {2e5, 1e3, 0.0, -1.0, -500.0, -12e3, -80e3}) {
+    const Real content = contentAt(m, p);
+    for (const Real guess : {0.0, p / 2 - 100, 2 * p + 100})
+      EXPECT_NEAR(pressureOfLiquidContent(m, content, guess), p, 1e-13 * kBulk)
+          << p << " from " << guess;
+  }
+}
+
+}  // namespace
+}  // namespace argine
