@@ -140,9 +140,7 @@ const TimeStepChoice& ExplicitTwoPhaseSolver::chooseTimeStep() {
     global_choice_ = candidate_.choice;
     return global_choice_;
   }
-  const TimeStepChoice& local =
-      points_.count > 0 ? time_step_.next(points_, table_) : time_step_.nextWithoutPoints();
-  global_choice_ = globalTimeStep(ranks_->comm(), local);
+  global_choice_ = globalTimeStep(ranks_->comm(), localTimeStep());
   return global_choice_;
 }
 
@@ -391,6 +389,10 @@ void ExplicitTwoPhaseSolver::relocatePoints() {
   relocation_ = relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
 }
 
+const TimeStepChoice& ExplicitTwoPhaseSolver::localTimeStep() {
+  return points_.count > 0 ? time_step_.next(points_, table_) : time_step_.nextWithoutPoints();
+}
+
 void ExplicitTwoPhaseSolver::prepareNextTimeStep() {
   // What chooseTimeStep() would do before the next step, done now on the relocated points so
   // that its minimum over the ranks travels with the end-of-step reduction. The points are
@@ -398,8 +400,7 @@ void ExplicitTwoPhaseSolver::prepareNextTimeStep() {
   state_before_candidate_ = time_step_.state();
   candidate_.ready = true;
   try {
-    candidate_.choice =
-        points_.count > 0 ? time_step_.next(points_, table_) : time_step_.nextWithoutPoints();
+    candidate_.choice = localTimeStep();
   } catch (const RunError&) {
     // No usable step here: chooseTimeStep() evaluates again on every rank and reports it.
     time_step_.restore(state_before_candidate_);

@@ -208,16 +208,15 @@ void TimeStepControl::pointsReordered(const MaterialPoints& points) {
   choice_.point = pointIndexOfId(points, choice_.point_id);
 }
 
-const TimeStepChoice& TimeStepControl::nextWithoutPoints() {
+template <class Evaluate>
+const TimeStepChoice& TimeStepControl::advance(Evaluate&& evaluate) {
   if (!automatic_) {
     choice_ = TimeStepChoice{};
     choice_.time_step = fixed_step_;
     return choice_;
   }
   if (stale_ || calls_since_update_ >= update_interval_) {
-    choice_ = TimeStepChoice{};
-    choice_.automatic = true;
-    choice_.time_step = choice_.critical_step = kmath::infinity();
+    choice_ = evaluate();
     stale_ = false;
     calls_since_update_ = 0;
   }
@@ -225,33 +224,34 @@ const TimeStepChoice& TimeStepControl::nextWithoutPoints() {
   return choice_;
 }
 
+const TimeStepChoice& TimeStepControl::nextWithoutPoints() {
+  return advance([] {
+    TimeStepChoice none;
+    none.automatic = true;
+    none.time_step = none.critical_step = kmath::infinity();
+    return none;
+  });
+}
+
 const TimeStepChoice& TimeStepControl::next(const MaterialPoints& points,
                                             const MaterialTable& table) {
-  if (!automatic_) {
-    choice_ = TimeStepChoice{};
-    choice_.time_step = fixed_step_;
-    return choice_;
-  }
-  if (stale_ || calls_since_update_ >= update_interval_) {
-    choice_ = evaluate(points, table);
-    if (!(choice_.critical_step < kmath::infinity()))
+  return advance([&] {
+    TimeStepChoice choice = evaluate(points, table);
+    if (!(choice.critical_step < kmath::infinity()))
       throw RunError(
           "no critical time-step criterion limits the step (no located points, or "
           "the criteria do not apply to any point); use a fixed step");
-    if (!(choice_.critical_step > 0)) {
+    if (!(choice.critical_step > 0)) {
       std::ostringstream out;
-      out << "the critical time step is " << choice_.critical_step << " s ("
-          << criterionName(choice_.governing) << " criterion) at point " << choice_.point_id
-          << " (index " << choice_.point << ") at (" << choice_.position[0] << ", "
-          << choice_.position[1] << "): the run cannot advance (e.g. zero conductivity)";
+      out << "the critical time step is " << choice.critical_step << " s ("
+          << criterionName(choice.governing) << " criterion) at point " << choice.point_id
+          << " (index " << choice.point << ") at (" << choice.position[0] << ", "
+          << choice.position[1] << "): the run cannot advance (e.g. zero conductivity)";
       throw RunError(out.str());
     }
-    choice_.time_step = safety_factor_ * choice_.critical_step;
-    stale_ = false;
-    calls_since_update_ = 0;
-  }
-  ++calls_since_update_;
-  return choice_;
+    choice.time_step = safety_factor_ * choice.critical_step;
+    return choice;
+  });
 }
 
 }  // namespace argine

@@ -84,12 +84,18 @@ struct RunResult {
   long long steps = 0;
 };
 
-RunResult run(Scene scene, bool distributed) {
-  MaterialPoints copy;  // the solver works on a deep copy of the scene's points
-  copy.allocate(scene.points.count);
-#define ARGINE_COPY_FIELD(name) Kokkos::deep_copy(copy.name, scene.points.name);
+/// A deep copy of every point field.
+MaterialPoints copyOf(const MaterialPoints& points) {
+  MaterialPoints copy;
+  copy.allocate(points.count);
+#define ARGINE_COPY_FIELD(name) Kokkos::deep_copy(copy.name, points.name);
   ARGINE_MATERIAL_POINT_FIELDS(ARGINE_COPY_FIELD)
 #undef ARGINE_COPY_FIELD
+  return copy;
+}
+
+RunResult run(Scene scene, bool distributed) {
+  MaterialPoints copy = copyOf(scene.points);  // the solver works on a deep copy
   const int total = copy.count;
   ExplicitTwoPhaseSolver solver(scene.mesh, copy, scene.materials);
   solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
@@ -240,11 +246,7 @@ struct TimeStepRecord {
 };
 
 TimeStepRecord recordTimeSteps(Scene scene, bool distributed, int change_at) {
-  MaterialPoints copy;
-  copy.allocate(scene.points.count);
-#define ARGINE_COPY_FIELD(name) Kokkos::deep_copy(copy.name, scene.points.name);
-  ARGINE_MATERIAL_POINT_FIELDS(ARGINE_COPY_FIELD)
-#undef ARGINE_COPY_FIELD
+  MaterialPoints copy = copyOf(scene.points);
   ExplicitTwoPhaseSolver solver(scene.mesh, copy, scene.materials);
   solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
   solver.setReproducibleSums(scene.reproducible_sums);

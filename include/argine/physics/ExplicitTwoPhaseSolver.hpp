@@ -257,7 +257,8 @@ class ExplicitTwoPhaseSolver {
   void accountBoundaryFluxes(Real dt);
   void updatePointStates();
   void relocatePoints();
-  void prepareNextTimeStep();    // several ranks: this rank's candidate for the next step
+  const TimeStepChoice& localTimeStep();  // several ranks: this rank's next() call
+  void prepareNextTimeStep();             // several ranks: this rank's candidate for the next step
   void completeStepOverRanks();  // several ranks: the step's sums, the next step, migration
   void updateActiveNodes();
   void sortPoints();

@@ -98,6 +98,11 @@ class TimeStepControl {
   }
 
  private:
+  /// The fixed step, or the cached choice, replaced by evaluate() when the update interval
+  /// is up (next() and nextWithoutPoints() differ only in what they evaluate).
+  template <class Evaluate>
+  const TimeStepChoice& advance(Evaluate&& evaluate);
+
   Kokkos::View<Real*, MemSpace> element_size_;
   std::vector<CriterionKind> criteria_;  ///< the stage's, in order (slots 0, 1, ...)
   // evaluate()'s scratch: the gathered inputs and each criterion's step, per point.
