@@ -7,6 +7,7 @@
 #include <Kokkos_MathematicalFunctions.hpp>
 #include <Kokkos_NumericTraits.hpp>
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 
 namespace argine::kmath {
@@ -32,6 +33,26 @@ KOKKOS_INLINE_FUNCTION Real cos(Real x) {
 KOKKOS_INLINE_FUNCTION Real fabs(Real x) {
   return Kokkos::Experimental::fabs(x);
 }
+/// sqrt and |x| of each of kLanes points (Lanes.hpp): the IEEE square root, as above. Written per
+/// lane: the compiler turns each loop into one vector instruction where errno is off (the library
+/// rooms, cmake/ArgineRooms.cmake).
+KOKKOS_INLINE_FUNCTION Lanes sqrt(Lanes x) {
+  Lanes out;
+  for (int l = 0; l < kLanes; ++l) out[l] = __builtin_sqrt(x[l]);
+  return out;
+}
+/// The library logarithm of each lane, one call per lane (so the same bits as the scalar one).
+KOKKOS_INLINE_FUNCTION Lanes log(Lanes x) {
+  Lanes out;
+  for (int l = 0; l < kLanes; ++l) out[l] = Kokkos::Experimental::log(x[l]);
+  return out;
+}
+KOKKOS_INLINE_FUNCTION Lanes fabs(Lanes x) {
+  Lanes out;
+  for (int l = 0; l < kLanes; ++l) out[l] = __builtin_fabs(x[l]);
+  return out;
+}
+
 // fmin and fmax as C99 defines them (a NaN argument gives the other one), written out: the
 // library's fmin/fmax is a call on x86-64 without AVX-512 (a hot one in the time-step
 // criteria), while these compile to minsd/maxsd and a blend. The same values, except that
@@ -43,6 +64,14 @@ KOKKOS_INLINE_FUNCTION Real fmin(Real x, Real y) {
 KOKKOS_INLINE_FUNCTION Real fmax(Real x, Real y) {
   if (x != x) return y;
   return y > x ? y : x;
+}
+
+/// Whether x is finite (neither infinite nor NaN), per lane for Lanes.
+KOKKOS_INLINE_FUNCTION bool isFinite(Real x) {
+  return Kokkos::Experimental::isfinite(x);
+}
+KOKKOS_INLINE_FUNCTION LaneMask isFinite(Lanes x) {
+  return fabs(x) <= Kokkos::Experimental::finite_max<Real>::value;
 }
 
 /// +infinity: the "no limit" value of a time-step criterion that does not apply.

@@ -39,10 +39,12 @@ KOKKOS_INLINE_FUNCTION Real constrainedModulus(const SolidSpec& spec) {
 /// Effective-stress increment of a strain increment: dstress = D dstrain (Pa), with the
 /// tensor shear strain in dstrain[3] (see file comment); lambda and 2G given (Pa), e.g.
 /// derived once per material (SolidConstants, SolidModel.hpp) instead of at every point.
+/// T = Real for one point, Lanes for kLanes points (core/Lanes.hpp).
+template <class T>
 KOKKOS_INLINE_FUNCTION void elasticStressIncrement(Real lambda, Real two_g,
-                                                   const Real dstrain[kStressComponents],
-                                                   Real dstress[kStressComponents]) {
-  const Real volumetric = dstrain[0] + dstrain[1] + dstrain[2];
+                                                   const T dstrain[kStressComponents],
+                                                   T dstress[kStressComponents]) {
+  const T volumetric = dstrain[0] + dstrain[1] + dstrain[2];
   dstress[0] = lambda * volumetric + two_g * dstrain[0];
   dstress[1] = lambda * volumetric + two_g * dstrain[1];
   dstress[2] = lambda * volumetric + two_g * dstrain[2];

@@ -195,36 +195,41 @@ KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n,
 
 }  // namespace mc_detail
 
+/// The admissibility test of returnToMohrCoulomb for SORTED principal trial stresses: the
+/// tension cut-off where it matters, the tolerance of every test of the return (1e-12 x the
+/// stress scale), and whether the trial lies outside the surface (F1 or, with the cut-off,
+/// T1 above the tolerance). One place, so that a caller may test before calling the return.
+/// T = Real for one point, Lanes for kLanes points (core/Lanes.hpp; `outside` is then a
+/// LaneMask).
+template <class T>
+struct MohrCoulombTrialCheck {
+  bool cutoff;
+  T tolerance;
+  decltype(T{} > T{}) outside;
+};
+
+template <class T>
+KOKKOS_INLINE_FUNCTION MohrCoulombTrialCheck<T> checkMohrCoulombTrial(
+    const MohrCoulombStrength& strength, const MohrCoulombFactors& factors, const T sigma[3]) {
+  MohrCoulombTrialCheck<T> check;
+  // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
+  check.cutoff = strength.tension_cutoff && strength.tensile_strength < factors.apex;
+  const T scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
+                  strength.cohesion +
+                  (check.cutoff ? kmath::fabs(strength.tensile_strength) : Real(0));
+  check.tolerance = 1e-12 * select(scale > 0, scale, splat<T>(1));
+  const T yield = factors.k * sigma[0] - sigma[2] - factors.sigma_c;  // mohrCoulombYield
+  check.outside = yield > check.tolerance;
+  if (check.cutoff)
+    check.outside = either(check.outside, sigma[0] - strength.tensile_strength > check.tolerance);
+  return check;
+}
+
 /// Returns the SORTED principal trial stresses sigma (sigma[0] >= sigma[1] >= sigma[2], Pa)
 /// to the Mohr-Coulomb surface in place (file comment); lambda, G the elastic constants,
 /// `factors` = mohrCoulombFactors(strength). Writes the principal plastic strain increment
 /// D^-1 (sigma_trial - sigma) to plastic_strain and returns the region (kMohrCoulombElastic,
 /// Surface or Apex).
-/// The admissibility test of returnToMohrCoulomb for SORTED principal trial stresses: the
-/// tension cut-off where it matters, the tolerance of every test of the return (1e-12 x the
-/// stress scale), and whether the trial lies outside the surface (F1 or, with the cut-off,
-/// T1 above the tolerance). One place, so that a caller may test before calling the return.
-struct MohrCoulombTrialCheck {
-  bool cutoff;
-  Real tolerance;
-  bool outside;
-};
-
-KOKKOS_INLINE_FUNCTION MohrCoulombTrialCheck checkMohrCoulombTrial(
-    const MohrCoulombStrength& strength, const MohrCoulombFactors& factors, const Real sigma[3]) {
-  MohrCoulombTrialCheck check;
-  // The cut-off matters only below the apex (F1 <= 0 in the sextant implies sigma_1 <= sigma_a).
-  check.cutoff = strength.tension_cutoff && strength.tensile_strength < factors.apex;
-  const Real scale = kmath::fabs(sigma[0]) + kmath::fabs(sigma[1]) + kmath::fabs(sigma[2]) +
-                     strength.cohesion +
-                     (check.cutoff ? kmath::fabs(strength.tensile_strength) : 0);
-  check.tolerance = 1e-12 * (scale > 0 ? scale : 1);
-  const Real yield = factors.k * sigma[0] - sigma[2] - factors.sigma_c;  // mohrCoulombYield
-  check.outside = yield > check.tolerance ||
-                  (check.cutoff && sigma[0] - strength.tensile_strength > check.tolerance);
-  return check;
-}
-
 KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength,
                                                const MohrCoulombFactors& factors, Real lambda,
                                                Real shear_modulus, Real sigma[3],
@@ -232,7 +237,7 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
   using namespace mc_detail;
   for (int c = 0; c < 3; ++c) plastic_strain[c] = 0;
   const Real apex = factors.apex;
-  const MohrCoulombTrialCheck check = checkMohrCoulombTrial(strength, factors, sigma);
+  const MohrCoulombTrialCheck<Real> check = checkMohrCoulombTrial(strength, factors, sigma);
   if (!check.outside) return kMohrCoulombElastic;
   const bool cutoff = check.cutoff;
   const Real tolerance = check.tolerance;
@@ -284,15 +289,16 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
 
 /// In-plane principal decomposition of (xx, yy, xy): centre c, radius R >= 0 and the unit
 /// direction (cos 2 theta, sin 2 theta) of the major axis (1, 0 when R = 0). The principal
-/// values are c + R and c - R.
+/// values are c + R and c - R. T = Real, or Lanes for kLanes points (core/Lanes.hpp).
+template <class T>
 struct InPlanePrincipal {
-  Real centre;
-  Real radius;
-  Real half_difference;  ///< (xx - yy) / 2
-  Real shear;            ///< xy
+  T centre;
+  T radius;
+  T half_difference;  ///< (xx - yy) / 2
+  T shear;            ///< xy
 
   /// cos 2 theta, sin 2 theta: two divisions, so only asked for where a return rotates the
-  /// principal values back (an elastic point keeps its trial stress).
+  /// principal values back (an elastic point keeps its trial stress). One point.
   KOKKOS_INLINE_FUNCTION void direction(Real& cos2, Real& sin2) const {
     const Real tiny = 1e-300;
     if (radius > tiny) {
@@ -305,13 +311,32 @@ struct InPlanePrincipal {
   }
 };
 
-KOKKOS_INLINE_FUNCTION InPlanePrincipal inPlanePrincipal(Real xx, Real yy, Real xy) {
-  InPlanePrincipal p;
+template <class T>
+KOKKOS_INLINE_FUNCTION InPlanePrincipal<T> inPlanePrincipal(T xx, T yy, T xy) {
+  InPlanePrincipal<T> p;
   p.centre = (xx + yy) / 2;
   p.half_difference = (xx - yy) / 2;
   p.shear = xy;
   p.radius = kmath::sqrt(p.half_difference * p.half_difference + xy * xy);
   return p;
+}
+
+/// The plane-strain principal stresses of a trial stress (xx, yy, zz, xy) sorted descending
+/// into sigma[0] >= sigma[1] >= sigma[2]: the in-plane pair c + R, c - R and sigma_zz. Returns
+/// where sigma_zz went (slot 0, 1 or 2; with Lanes, per lane). Ties put sigma_zz first.
+template <class T>
+KOKKOS_INLINE_FUNCTION auto sortedPrincipalStresses(const InPlanePrincipal<T>& in_plane, T zz,
+                                                    T sigma[3]) {
+  const T major = in_plane.centre + in_plane.radius;
+  const T minor = in_plane.centre - in_plane.radius;
+  const auto first = zz >= major, second = zz >= minor;  // zz in slot 0, or in slot 1 or 0
+  sigma[0] = select(first, zz, major);
+  sigma[1] = select(first, major, select(second, zz, minor));
+  sigma[2] = select(either(first, second), minor, zz);
+  if constexpr (std::is_same_v<T, Real>)
+    return first ? 0 : second ? 1 : 2;
+  else
+    return 0;  // not needed by the Lanes caller, which returns plastic lanes one by one
 }
 
 /// Equivalent deviatoric strain sqrt(2/3 e:e) of principal strains.
@@ -337,20 +362,9 @@ KOKKOS_INLINE_FUNCTION int mohrCoulombStressUpdate(Real lambda, Real shear_modul
   elasticStressIncrement(lambda, 2 * shear_modulus, dstrain, dstress);
   Real trial[kStressComponents];
   for (int i = 0; i < kStressComponents; ++i) trial[i] = stress[i] + dstress[i];
-  const InPlanePrincipal in_plane = inPlanePrincipal(trial[0], trial[1], trial[3]);
-  const Real major = in_plane.centre + in_plane.radius;
-  const Real minor = in_plane.centre - in_plane.radius;
-  const Real zz = trial[2];
-  // Sort (major, minor, zz) descending; remember where zz went (0, 1 or 2).
+  const InPlanePrincipal<Real> in_plane = inPlanePrincipal(trial[0], trial[1], trial[3]);
   Real sigma[3];
-  int z_slot;
-  if (zz >= major) {
-    sigma[0] = zz, sigma[1] = major, sigma[2] = minor, z_slot = 0;
-  } else if (zz >= minor) {
-    sigma[0] = major, sigma[1] = zz, sigma[2] = minor, z_slot = 1;
-  } else {
-    sigma[0] = major, sigma[1] = minor, sigma[2] = zz, z_slot = 2;
-  }
+  const int z_slot = sortedPrincipalStresses(in_plane, trial[2], sigma);
   // Most points are inside the surface: test here, and call the return (large, not inlined)
   // only for the others.
   if (!checkMohrCoulombTrial(strength, factors, sigma).outside) {

@@ -93,9 +93,25 @@ KOKKOS_INLINE_FUNCTION Real liquidContentSlope(Real density, Real saturation,
 /// divergence is the boundary flux up to quadrature; the simplified form uses the point's own
 /// c_p = M_L / V. Increments over dt: relative_divergence = dt div w, flux_divergence = dt
 /// div(c w).
-KOKKOS_INLINE_FUNCTION Real liquidMassAfterFlux(bool complete, Real mass, Real volume,
-                                                Real relative_divergence, Real flux_divergence) {
+/// T = Real for one point, Lanes for kLanes points (core/Lanes.hpp).
+template <class T>
+KOKKOS_INLINE_FUNCTION T liquidMassAfterFlux(bool complete, T mass, T volume, T relative_divergence,
+                                             T flux_divergence) {
   return complete ? mass - volume * flux_divergence : mass * (1 - relative_divergence);
+}
+
+/// The saturated liquid pressure p_L = K_L ln(content / rho_L0) (Pa), the inverse of 4.13, of
+/// a liquid content M_L / (n V) (kg/m^3); NaN for a non-positive content. T = Real, or Lanes
+/// for kLanes points.
+template <class T>
+KOKKOS_INLINE_FUNCTION T saturatedPressureOfContent(const LiquidSpec& liquid, T content) {
+  if constexpr (std::is_same_v<T, Real>) {
+    if (!(content > 0)) return kmath::quietNaN();
+    return liquid.bulk_modulus * kmath::log(content / liquid.density);
+  } else {
+    return select(content > 0, liquid.bulk_modulus * kmath::log(content / liquid.density),
+                  splat<T>(kmath::quietNaN()));
+  }
 }
 
 /// The liquid pressure p_L (Pa) at which S_L(p_L) rho_L(p_L) equals the liquid content
@@ -105,10 +121,10 @@ KOKKOS_INLINE_FUNCTION Real liquidMassAfterFlux(bool complete, Real mass, Real v
 /// A non-positive content gives NaN (the run's non-finite check then stops it).
 KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& material, Real content,
                                                     Real guess) {
+  if (material.phase != PhaseModel::Unsaturated)
+    return saturatedPressureOfContent(material.liquid, content);
   const Real bulk = material.liquid.bulk_modulus;
   if (!(content > 0)) return kmath::quietNaN();
-  if (material.phase != PhaseModel::Unsaturated)
-    return bulk * kmath::log(content / material.liquid.density);
   // Safeguarded Newton: S_L rho_L - content is increasing in p_L, so every iterate brackets
   // the root from one side; a Newton step leaving the bracket (the SWRC has a kink at s = 0)
   // is replaced by bisection.

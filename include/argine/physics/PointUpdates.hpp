@@ -5,6 +5,7 @@
 /// ONE pass over the points (one read and one write of each point field instead of five),
 /// and sums the diagnostics on the way.
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
@@ -27,13 +28,15 @@ struct PointUpdateViews {
 
 /// Step 6 (done first, the mass balance needs the new pore volume), solid mass balance
 /// (4.9): V <- V (1 + d eps_vol), and n from (1 - n) V = const, so the solid mass
-/// (1 - n) rho_S V is kept exactly.
+/// (1 - n) rho_S V is kept exactly. T = Real: point p; Lanes: points p .. p + kLanes - 1.
+template <class T = Real>
 KOKKOS_INLINE_FUNCTION void updatePorosityAndVolume(const PointUpdateViews& v, int p) {
-  const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
-                          v.rates.strain_increment_p(p, ZZ);
-  const Real ratio = 1 + volumetric;  // V^{k+1} / V^k
-  v.points.volume(p) *= ratio;
-  v.points.porosity(p) = 1 - (1 - v.points.porosity(p)) / ratio;
+  const auto& increment = v.rates.strain_increment_p;
+  const T volumetric =
+      load<T>(increment, p, XX) + load<T>(increment, p, YY) + load<T>(increment, p, ZZ);
+  const T ratio = 1 + volumetric;  // V^{k+1} / V^k
+  store(v.points.volume, p, load<T>(v.points.volume, p) * ratio);
+  store(v.points.porosity, p, 1 - (1 - load<T>(v.points.porosity, p)) / ratio);
 }
 
 /// Step 5, liquid mass balance (4.12 with the advective-gradient term 4.16, or 4.14 without
@@ -77,10 +80,38 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int 
   v.points.mass_liquid(p) = mass;
 }
 
-/// Equivalent deviatoric strain sqrt(2/3 e:e) of a plane-strain strain (tensor shear).
-KOKKOS_INLINE_FUNCTION Real equivalentDeviatoricStrain(const Real e[kStressComponents]) {
-  const Real mean = (e[XX] + e[YY] + e[ZZ]) / 3;
-  const Real dxx = e[XX] - mean, dyy = e[YY] - mean, dzz = e[ZZ] - mean;
+/// updateLiquidPressure of the kLanes points p .. p + kLanes - 1 of one material: the same
+/// formulas on all lanes at once for a saturated material (its pressure is the closed-form
+/// inverse of 4.13, a logarithm per lane); an unsaturated material (Newton iterations) or a
+/// held pressure takes the one-point update lane by lane. The same bits either way.
+KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v, int p,
+                                                      const PointMaterial& material) {
+  if (!carriesLiquid(material.phase)) return;
+  if (v.hold_liquid_pressure || material.phase == PhaseModel::Unsaturated) {
+    for (int l = 0; l < kLanes; ++l) updateLiquidPressure(v, p + l);
+    return;
+  }
+  const auto& increment = v.rates.strain_increment_p;
+  const Lanes volumetric =
+      load<Lanes>(increment, p, XX) + load<Lanes>(increment, p, YY) + load<Lanes>(increment, p, ZZ);
+  const Lanes volume = load<Lanes>(v.points.volume, p);
+  const Lanes old_volume = volume / (1 + volumetric);
+  const Lanes mass = liquidMassAfterFlux(
+      material.mass_balance == MassBalanceForm::Complete, load<Lanes>(v.points.mass_liquid, p),
+      old_volume, load<Lanes>(v.rates.liquid_divergence_increment_p, p) - volumetric,
+      load<Lanes>(v.rates.content_flux_divergence_increment_p, p));
+  const Lanes content = mass / (load<Lanes>(v.points.porosity, p) * volume);
+  store(v.points.pressure_liquid, p, saturatedPressureOfContent(material.liquid, content));
+  store(v.points.density_liquid, p, content);  // S_L = 1: the content is the density itself
+  store(v.points.mass_liquid, p, mass);
+}
+
+/// Equivalent deviatoric strain sqrt(2/3 e:e) of a plane-strain strain (tensor shear), of one
+/// point (Real) or kLanes points (Lanes).
+template <class T>
+KOKKOS_INLINE_FUNCTION T equivalentDeviatoricStrain(const T e[kStressComponents]) {
+  const T mean = (e[XX] + e[YY] + e[ZZ]) / 3;
+  const T dxx = e[XX] - mean, dyy = e[YY] - mean, dzz = e[ZZ] - mean;
   return kmath::sqrt(2.0 / 3.0 * (dxx * dxx + dyy * dyy + dzz * dzz + 2 * e[XY] * e[XY]));
 }
 
@@ -123,11 +154,70 @@ KOKKOS_INLINE_FUNCTION void updateLiquidState(const PointUpdateViews& v, int p) 
   v.points.conductivity(p) = state.conductivity;
 }
 
-/// Step 7, Euler-Cromer (7.13): x += dt sum N v_S^{k+1}, u += the same.
+/// Step 7, Euler-Cromer (7.13): x += dt sum N v_S^{k+1}, u += the same. T = Real: point p;
+/// Lanes: points p .. p + kLanes - 1.
+template <class T = Real>
 KOKKOS_INLINE_FUNCTION void updatePointPosition(const PointUpdateViews& v, int p) {
   for (int d = 0; d < kDim; ++d) {
-    v.points.position(p, d) += v.rates.displacement_increment_p(p, d);
-    v.points.displacement(p, d) += v.rates.displacement_increment_p(p, d);
+    const T increment = load<T>(v.rates.displacement_increment_p, p, d);
+    store(v.points.position, p, d, load<T>(v.points.position, p, d) + increment);
+    store(v.points.displacement, p, d, load<T>(v.points.displacement, p, d) + increment);
+  }
+}
+
+/// Whether updateEffectiveStressLanes covers the material's solid model (those whose update
+/// has no parameter that varies by point).
+KOKKOS_INLINE_FUNCTION bool hasLaneStressUpdate(const PointMaterial& material) {
+  return material.solid.model == SolidModel::LinearElastic ||
+         material.solid.model == SolidModel::MohrCoulomb;
+}
+
+/// updateEffectiveStress of the kLanes points p .. p + kLanes - 1 of one material with
+/// hasLaneStressUpdate, all at once with the same formulas (rotation, elastic trial, and for
+/// Mohr-Coulomb its principal stresses and admissibility test). A lane whose Mohr-Coulomb
+/// trial lies outside the surface is left to the one-point updateEffectiveStress, which does
+/// the return (a branchy, rarer path). So each lane gets the one-point update's bits.
+KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v, int p,
+                                                       const PointMaterial& material) {
+  Lanes dstrain[kStressComponents], stress[kStressComponents], strain[kStressComponents];
+  for (int c = 0; c < kStressComponents; ++c) {
+    dstrain[c] = load<Lanes>(v.rates.strain_increment_p, p, c);
+    stress[c] = load<Lanes>(v.points.stress_effective, p, c);
+    strain[c] = load<Lanes>(v.points.strain, p, c) + dstrain[c];
+  }
+  rotateStressBySpin(load<Lanes>(v.rates.spin_increment_p, p), stress);
+  const SolidConstants& constants = material.solid_constants;
+  Lanes dstress[kStressComponents];
+  elasticStressIncrement(constants.lambda, 2 * constants.shear_modulus, dstrain, dstress);
+  for (int c = 0; c < kStressComponents; ++c) stress[c] = stress[c] + dstress[c];  // the trial
+  LaneMask outside = {};
+  if (material.solid.model == SolidModel::MohrCoulomb) {
+    Lanes sigma[3];
+    sortedPrincipalStresses(inPlanePrincipal(stress[XX], stress[YY], stress[XY]), stress[ZZ],
+                            sigma);
+    outside = checkMohrCoulombTrial(constants.strength, constants.factors, sigma).outside;
+  }
+  const Lanes deviatoric = equivalentDeviatoricStrain(strain);
+  if (!anyLane(outside)) {  // the common case: elastic in every lane
+    for (int c = 0; c < kStressComponents; ++c) {
+      store(v.points.stress_effective, p, c, stress[c]);
+      store(v.points.strain, p, c, strain[c]);
+    }
+    store(v.points.deviatoric_strain, p, deviatoric);
+    for (int l = 0; l < kLanes; ++l) v.points.plastic_state(p + l) = kPlasticStateElastic;
+    return;
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    if (outside[l]) {
+      updateEffectiveStress(v, p + l);  // from the stored state: it has not been written
+      continue;
+    }
+    for (int c = 0; c < kStressComponents; ++c) {
+      v.points.stress_effective(p + l, c) = stress[c][l];
+      v.points.strain(p + l, c) = strain[c][l];
+    }
+    v.points.deviatoric_strain(p + l) = deviatoric[l];
+    v.points.plastic_state(p + l) = kPlasticStateElastic;
   }
 }
 

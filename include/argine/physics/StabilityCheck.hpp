@@ -6,7 +6,9 @@
 
 #include <string>
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/materials/KernelMath.hpp"
 #include "argine/points/MaterialPoints.hpp"
 
 namespace argine {
@@ -24,11 +26,15 @@ struct PointTotals {
 /// Whether point p's position, liquid pressure and effective stress are finite and its
 /// volume positive (a collapsed or inverted point volume is the other way an explicit step
 /// fails). Velocities are checked where they are updated (the G2P).
-KOKKOS_INLINE_FUNCTION bool pointStateIsValid(const MaterialPoints& pts, int p) {
-  auto finite = [](Real x) { return Kokkos::Experimental::isfinite(x); };
-  bool ok = pts.volume(p) > 0 && finite(pts.volume(p)) && finite(pts.pressure_liquid(p));
-  for (int d = 0; d < kDim; ++d) ok = ok && finite(pts.position(p, d));
-  for (int c = 0; c < kStressComponents; ++c) ok = ok && finite(pts.stress_effective(p, c));
+/// T = Real: point p (a bool); Lanes: points p .. p + kLanes - 1 (a LaneMask).
+template <class T = Real>
+KOKKOS_INLINE_FUNCTION auto pointStateIsValid(const MaterialPoints& pts, int p) {
+  const T volume = load<T>(pts.volume, p);
+  auto ok = both(volume > 0,
+                 both(kmath::isFinite(volume), kmath::isFinite(load<T>(pts.pressure_liquid, p))));
+  for (int d = 0; d < kDim; ++d) ok = both(ok, kmath::isFinite(load<T>(pts.position, p, d)));
+  for (int c = 0; c < kStressComponents; ++c)
+    ok = both(ok, kmath::isFinite(load<T>(pts.stress_effective, p, c)));
   return ok;
 }
 

@@ -1,0 +1,134 @@
+#pragma once
+/// @file Lanes.hpp
+/// Several material points in one instruction (SIMD across points): `Lanes` holds one value
+/// of kLanes consecutive points, and the per-point formulas that are templates on their value
+/// type (Real or Lanes) run on all of them at once. Every operation on Lanes is the IEEE
+/// operation of each lane (+, -, *, /, sqrt, fabs, comparisons; -ffp-contract=off keeps a * b
+/// + c two roundings here too), so a lane gets the same bits as the scalar formula gives its
+/// point. Branches are written as select(), which for Real is the plain conditional.
+///
+/// A GCC/Clang vector extension, not a library type: the compiler emits the vector
+/// instructions of the target (AVX2/AVX-512: one register; SSE2: two), and the same source
+/// compiles on any of them.
+
+#include <cstring>
+#include <type_traits>
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+/// Points per Lanes value: 4 doubles, one AVX register.
+inline constexpr int kLanes = 4;
+
+/// One Real of kLanes points.
+typedef Real Lanes __attribute__((vector_size(kLanes * sizeof(Real))));
+
+/// The result of comparing two Lanes: all bits set in a lane where the comparison holds.
+using LaneMask = decltype(Lanes{} < Lanes{});
+
+/// The value type's counterpart of a constant: x itself for Real, x in every lane for Lanes.
+template <class T>
+KOKKOS_INLINE_FUNCTION T splat(Real x) {
+  if constexpr (std::is_same_v<T, Real>)
+    return x;
+  else
+    return T{} + x;
+}
+
+/// `condition ? a : b`, per lane for Lanes.
+KOKKOS_INLINE_FUNCTION Real select(bool condition, Real a, Real b) {
+  return condition ? a : b;
+}
+KOKKOS_INLINE_FUNCTION Lanes select(LaneMask condition, Lanes a, Lanes b) {
+  LaneMask bits_a, bits_b;
+  std::memcpy(&bits_a, &a, sizeof a);
+  std::memcpy(&bits_b, &b, sizeof b);
+  const LaneMask bits = (condition & bits_a) | (~condition & bits_b);
+  Lanes out;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
+/// a and b, a or b: of two conditions, or per lane of two LaneMasks.
+KOKKOS_INLINE_FUNCTION bool both(bool a, bool b) {
+  return a && b;
+}
+KOKKOS_INLINE_FUNCTION LaneMask both(LaneMask a, LaneMask b) {
+  return a & b;
+}
+KOKKOS_INLINE_FUNCTION bool either(bool a, bool b) {
+  return a || b;
+}
+KOKKOS_INLINE_FUNCTION LaneMask either(LaneMask a, LaneMask b) {
+  return a | b;
+}
+
+/// Whether the condition holds in any lane (for Real: the condition).
+KOKKOS_INLINE_FUNCTION bool anyLane(bool condition) {
+  return condition;
+}
+KOKKOS_INLINE_FUNCTION bool anyLane(LaneMask condition) {
+  LaneMask folded = condition;
+  for (int l = 1; l < kLanes; ++l) folded[0] |= condition[l];
+  return folded[0] != 0;
+}
+
+/// out[l] = (in[0][l], in[1][l], in[2][l], in[3][l]): four values of kLanes points turned into
+/// the four values of each point (a 4 x 4 transpose, eight shuffles).
+KOKKOS_INLINE_FUNCTION void transposeLanes(const Lanes in[kLanes], Lanes out[kLanes]) {
+  const Lanes low01 = __builtin_shufflevector(in[0], in[1], 0, 4, 2, 6);
+  const Lanes high01 = __builtin_shufflevector(in[0], in[1], 1, 5, 3, 7);
+  const Lanes low23 = __builtin_shufflevector(in[2], in[3], 0, 4, 2, 6);
+  const Lanes high23 = __builtin_shufflevector(in[2], in[3], 1, 5, 3, 7);
+  out[0] = __builtin_shufflevector(low01, low23, 0, 1, 4, 5);
+  out[1] = __builtin_shufflevector(high01, high23, 0, 1, 4, 5);
+  out[2] = __builtin_shufflevector(low01, low23, 2, 3, 6, 7);
+  out[3] = __builtin_shufflevector(high01, high23, 2, 3, 6, 7);
+}
+
+/// The value of `view` at point p (Real), or at points p .. p + kLanes - 1 (Lanes).
+template <class T, class View>
+KOKKOS_INLINE_FUNCTION T load(const View& view, int p) {
+  if constexpr (std::is_same_v<T, Real>) {
+    return view(p);
+  } else {
+    static_assert(!std::is_same_v<typename View::array_layout, Kokkos::LayoutStride>,
+                  "load<Lanes> reads kLanes consecutive values");
+    T out;
+    std::memcpy(&out, &view(p), sizeof out);
+    return out;
+  }
+}
+
+/// Component c of a (point, component) View at point p, or at points p .. p + kLanes - 1.
+template <class T, class View>
+KOKKOS_INLINE_FUNCTION T load(const View& view, int p, int c) {
+  if constexpr (std::is_same_v<T, Real>) {
+    return view(p, c);
+  } else {
+    T out;
+    for (int l = 0; l < kLanes; ++l) out[l] = view(p + l, c);
+    return out;
+  }
+}
+
+/// Writes what load() reads.
+template <class View>
+KOKKOS_INLINE_FUNCTION void store(const View& view, int p, Real value) {
+  view(p) = value;
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION void store(const View& view, int p, Lanes value) {
+  std::memcpy(&view(p), &value, sizeof value);
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION void store(const View& view, int p, int c, Real value) {
+  view(p, c) = value;
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION void store(const View& view, int p, int c, Lanes value) {
+  for (int l = 0; l < kLanes; ++l) view(p + l, c) = value[l];
+}
+
+}  // namespace argine
