@@ -52,5 +52,20 @@ TEST(LiquidState, UnsaturatedPressureIsTheRootOnEitherSideOfZero) {
   }
 }
 
+TEST(LiquidState, UnsaturatedPressureIsFoundFromAGuessWhereTheSaturationIsZero) {
+  // Linear retention down to S_min = 0 (S_L = 0 beyond 2.5 MPa of suction, the default
+  // scene's soil): a guess there sees a flat S_L rho_L (no slope, an infinite Newton step).
+  // Found by the lanes test: a point whose content fell just below rho_L0 got the explicit
+  // predictor's guess of ~-4 MPa and a NaN pressure. The root: S_L = 0.998 at ~5 kPa.
+  PointMaterial m = material(PhaseModel::Unsaturated);
+  m.retention.model = RetentionModel::Linear;
+  m.retention.linear_slope = 4e-7;
+  m.retention.saturation_min = 0;
+  m.retention.saturation_max = 1;
+  const Real p = -5e3, content = contentAt(m, p);
+  for (const Real guess : {-4.2e6, -1e9, 7e3})
+    EXPECT_NEAR(pressureOfLiquidContent(m, content, guess), p, 1e-13 * kBulk) << guess;
+}
+
 }  // namespace
 }  // namespace argine

@@ -121,6 +121,7 @@ TEST(PointUpdateLanes, EveryPointGetsTheOnePointBits) {
     }
     EXPECT_EQ(totals.liquid_mass, liquid_mass);
     EXPECT_EQ(totals.non_finite_points, invalid);
+    EXPECT_EQ(invalid, 0);
     EXPECT_GT(plastic, 4);  // the returns are exercised, in lanes with elastic neighbours
     EXPECT_LT(plastic, count / 2);
     forEachPointField(lanes, [&](const char* name, const auto& field) {

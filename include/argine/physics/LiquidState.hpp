@@ -117,7 +117,9 @@ KOKKOS_INLINE_FUNCTION T saturatedPressureOfContent(const LiquidSpec& liquid, T 
 /// The liquid pressure p_L (Pa) at which S_L(p_L) rho_L(p_L) equals the liquid content
 /// `content` = M_L / (n V) (kg/m^3). Saturated (S_L = 1): p_L = K_L ln(content / rho_L0),
 /// the inverse of 4.13. Unsaturated: Newton iterations from `guess` on the increasing
-/// function S_L rho_L, whose derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12).
+/// function S_L rho_L, whose derivative is rho_L (S_L/K_L - dS_L/ds) (the storage of 4.12);
+/// a step out of the bracket bisects it, and before there is one (a guess where S_L = 0 and
+/// the function is flat) the pressure walks towards the root in doubling steps.
 /// A non-positive content gives NaN (the run's non-finite check then stops it).
 KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& material, Real content,
                                                     Real guess) {
@@ -144,7 +146,16 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
     const Real slope = liquidContentSlope(rho, s, swrc.slope, bulk);
     Real next = pressure - residual / slope;
     const bool bracketed = low > -kmath::infinity() && high < kmath::infinity();
-    if (!(next > low && next < high) && bracketed) next = 0.5 * (low + high);
+    if (!(next > low && next < high)) {
+      if (bracketed) {
+        next = 0.5 * (low + high);
+      } else if (!kmath::isFinite(next) || next < low || next > high) {
+        // a flat stretch (S_L = S_min = 0: no slope) gave a non-finite step: walk towards
+        // the root, doubling, until it is bracketed (a step too small to move stays: done)
+        const Real step = kmath::fmax(kmath::fabs(pressure), 1e-3 * bulk);
+        next = residual > 0 ? pressure - step : pressure + step;
+      }
+    }
     const Real change = kmath::fabs(next - pressure);
     pressure = next;
     if (change <= 1e-14 * bulk) break;
