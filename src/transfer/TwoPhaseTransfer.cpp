@@ -2,6 +2,8 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "PointShapesAt.hpp"
+#include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
@@ -26,29 +28,64 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
     f(std::integral_constant<int, 4>{});
 }
 
-/// Where a P2G kernel adds a node's contributions: the node's packed row of
-/// NodeRecords::sums_i, through a ScatterView access (plain adds on Serial)...
-template <class Access>
-struct PackedNodeSum {
-  Access& access;
-  int i;
-  KOKKOS_FORCEINLINE_FUNCTION void add(int slot, Real v) const { access(i, slot) += v; }
-};
-
+/// Where a P2G kernel adds its points' contributions, as rows of slots (NodeSumSlot) per
+/// point and node, for one point (T = Real) or kLanes points (T = Lanes): row[a][slot] for
+/// the point's node a, added for the blocks of kLanes slots [first_block, end_block). Every
+/// (node, slot) sum gets the points' contributions in point order, so the sums are the
+/// one-point sums to the bit.
+///
+/// Here: the packed rows of NodeRecords::sums_i. On Serial the ScatterView is the View
+/// itself (no duplicate, no atomics), so a point's block of kLanes slots is added to a node
+/// with one vector instruction; on other backends through the ScatterView access, slot by
+/// slot. A point adds zeros to the slots it has no part in (a dry point's liquid sums, the
+/// row's padding); every sum starts at +0 and so never becomes -0, and x + 0 = x then.
 template <class Access>
 struct PackedSums {
   Access& access;
-  KOKKOS_FORCEINLINE_FUNCTION PackedNodeSum<Access> node(int i) const { return {access, i}; }
+  Kokkos::View<Real* [kNodeSumRow], MemSpace> rows;
+
+  template <int kNodes, class T>
+  KOKKOS_INLINE_FUNCTION void addRows(const PointShapesAt<T>& at,
+                                      const T (&row)[kNodes][kNodeSumRow], int first_block,
+                                      int end_block, bool /*wet*/) const {
+    constexpr int kPoints = PointShapesAt<T>::kCount;
+    constexpr int kBlocks = kNodeSumRow / kLanes;
+    Lanes block[kPoints][kNodes][kBlocks];  // the blocks of each point and node
+    for (int a = 0; a < kNodes; ++a)
+      for (int b = first_block; b < end_block; ++b) {
+        if constexpr (kPoints == 1) {
+          std::memcpy(&block[0][a][b], &row[a][b * kLanes], sizeof(Lanes));
+        } else {
+          Lanes points[kLanes];
+          transposeLanes(&row[a][b * kLanes], points);
+          for (int l = 0; l < kLanes; ++l) block[l][a][b] = points[l];
+        }
+      }
+    for (int l = 0; l < kPoints; ++l)
+      for (int a = 0; a < kNodes; ++a) {
+        const int i = at.node(a, l);
+        for (int b = first_block; b < end_block; ++b) {
+          if constexpr (std::is_same_v<ExecSpace, Kokkos::Serial>) {
+            Real* sums = &rows(i, b * kLanes);
+            Lanes value;
+            std::memcpy(&value, sums, sizeof value);
+            value = value + block[l][a][b];
+            std::memcpy(sums, &value, sizeof value);
+          } else {
+            for (int k = 0; k < kLanes; ++k) access(i, b * kLanes + k) += block[l][a][b][k];
+          }
+        }
+      }
+  }
 };
 
 /// ... or the GridFields sums `hi`, compensated with their low parts in `lo` (reproducible
-/// sums, CompensatedSum.hpp; Serial only, so plain references). `slot` is a constant where
-/// the kernels call this, so the switch folds away.
-struct CompensatedNodeSum {
-  const GridFields& hi;
-  const GridFields& lo;
-  int i;
-  KOKKOS_FORCEINLINE_FUNCTION void add(int slot, Real v) const {
+/// sums, CompensatedSum.hpp; Serial only, so plain references), slot by slot: the slots a
+/// point has a part in (all but the liquid ones for a dry point), in point order.
+struct CompensatedSums {
+  GridFields hi, lo;
+
+  KOKKOS_INLINE_FUNCTION void add(int i, int slot, Real v) const {
     switch (slot) {
       case kSumMassSolid:
         return addCompensated(hi.mass_solid_i(i), lo.mass_solid_i(i), v);
@@ -72,11 +109,17 @@ struct CompensatedNodeSum {
         return addCompensated(hi.force_liquid_i(i, d), lo.force_liquid_i(i, d), v);
     }
   }
-};
 
-struct CompensatedSums {
-  GridFields hi, lo;
-  KOKKOS_FORCEINLINE_FUNCTION CompensatedNodeSum node(int i) const { return {hi, lo, i}; }
+  template <int kNodes, class T>
+  KOKKOS_INLINE_FUNCTION void addRows(const PointShapesAt<T>& at,
+                                      const T (&row)[kNodes][kNodeSumRow], int first_block,
+                                      int end_block, bool wet) const {
+    for (int l = 0; l < PointShapesAt<T>::kCount; ++l)
+      for (int a = 0; a < kNodes; ++a)
+        for (int slot = first_block * kLanes; slot < end_block * kLanes; ++slot)
+          if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot)))
+            add(at.node(a, l), slot, lane(row[a][slot], l));
+  }
 };
 
 /// Runs body(p, sums, r0, r1, n) for every point, with `sums` the packed rows of `records` or,
@@ -99,11 +142,12 @@ KineticTotals scatterFromPoints(const char* name, int count, const Body& body,
   }
   records.allocate(grid.numNodes());
   auto scatter = KE::create_scatter_view(records.sums_i);
+  const auto rows = records.sums_i;
   Kokkos::parallel_reduce(
       name, policy,
       KOKKOS_LAMBDA(const int p, Real& r0, Real& r1, int& n) {
         auto access = scatter.access();
-        body(p, PackedSums<decltype(access)>{access}, r0, r1, n);
+        body(p, PackedSums<decltype(access)>{access, rows}, r0, r1, n);
       },
       totals.solid, totals.liquid, totals.non_finite_points);
   KE::contribute(records.sums_i, scatter);
@@ -114,75 +158,197 @@ KineticTotals scatterFromPoints(const char* name, int count, const Body& body,
   return totals;
 }
 
+/// The nodal sums of the P2G (4.40-4.47), as point fields and their totals.
+struct P2GPointViews {
+  Kokkos::View<PointShape*, MemSpace> shape_p;
+  Kokkos::View<int*, MemSpace> material_p;
+  Kokkos::View<Real*, MemSpace> volume_p, mass_solid_p, mass_liquid_p, density_liquid_p, porosity_p,
+      saturation_p, conductivity_p, pressure_p;
+  Kokkos::View<Real* [kStressComponents], MemSpace> stress_p;
+  Kokkos::View<Real*[kDim], MemSpace> velocity_solid_p, velocity_liquid_p;
+};
+
+/// What point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located and all `wet` or
+/// all dry, add to their nodes (4.40-4.47): one row of NodeSumSlot values per node, computed
+/// for all lanes at once and added by `sums` (PackedSums, CompensatedSums) in point order.
+template <int kNodes, class T, class Sums>
+KOKKOS_INLINE_FUNCTION void mapPointToGrid(const PointShapesAt<T>& at, bool wet, Real gravity,
+                                           const P2GPointViews& v, const Sums& sums, int p) {
+  const T volume = load<T>(v.volume_p, p);
+  const T m_solid = load<T>(v.mass_solid_p, p);
+  const T m_liquid = wet ? load<T>(v.mass_liquid_p, p) : splat<T>(0);
+  // Bishop total stress, chi = S_L (4.5), p_L compression positive.
+  const T bishop = wet ? load<T>(v.saturation_p, p) * load<T>(v.pressure_p, p) : splat<T>(0);
+  const T sxx = load<T>(v.stress_p, p, XX) - bishop;
+  const T syy = load<T>(v.stress_p, p, YY) - bishop;
+  const T sxy = load<T>(v.stress_p, p, XY);
+  const T weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
+  const T vsx = load<T>(v.velocity_solid_p, p, 0), vsy = load<T>(v.velocity_solid_p, p, 1);
+  T row[kNodes][kNodeSumRow];
+  for (int a = 0; a < kNodes; ++a) {
+    for (int slot = 0; slot < kNodeSumRow; ++slot)  // the liquid's when dry, and the padding
+      if (!isSolidSumSlot(slot)) row[a][slot] = splat<T>(0);
+    const T N = at.value(a);
+    const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
+    row[a][kSumMassSolid] = N * m_solid;
+    row[a][kSumMomentumSolid] = N * m_solid * vsx;
+    row[a][kSumMomentumSolid + 1] = N * m_solid * vsy;
+    row[a][kSumForceMixture] = -(sxx * dx + sxy * dy) * volume;
+    row[a][kSumForceMixture + 1] = -(sxy * dx + syy * dy) * volume + N * weight_mixture;
+  }
+  if (wet) {
+    const T rho = load<T>(v.density_liquid_p, p);
+    const T m_intrinsic = rho * volume;  // 4.46
+    // Darcy drag per unit liquid volume n S_L rho_L g / k (4.2-4.3, 4.45), g = 9.81.
+    const T drag = load<T>(v.porosity_p, p) * load<T>(v.saturation_p, p) * rho * kStandardGravity /
+                   load<T>(v.conductivity_p, p) * volume;
+    const T pressure_volume = load<T>(v.pressure_p, p) * volume;
+    const T weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
+    const T vlx = load<T>(v.velocity_liquid_p, p, 0), vly = load<T>(v.velocity_liquid_p, p, 1);
+    for (int a = 0; a < kNodes; ++a) {
+      const T N = at.value(a);
+      row[a][kSumMassLiquid] = N * m_liquid;
+      row[a][kSumMassIntrinsic] = N * m_intrinsic;
+      row[a][kSumDrag] = N * drag;
+      row[a][kSumVolumeLiquid] = N * volume;
+      row[a][kSumMomentumLiquid] = N * m_intrinsic * vlx;
+      row[a][kSumMomentumLiquid + 1] = N * m_intrinsic * vly;
+      // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
+      row[a][kSumForceLiquid] = at.gradient(a, 0) * pressure_volume;
+      row[a][kSumForceLiquid + 1] = at.gradient(a, 1) * pressure_volume + N * weight_liquid;
+    }
+  }
+  sums.template addRows<kNodes>(at, row, 0, (kSumSlotCount + kLanes - 1) / kLanes, wet);
+}
+
+/// Whether the kLanes points from `first` (of `count`) can be mapped as Lanes: all located
+/// and all wet or all dry (`wet` is set to that); `one_element`: all in one element.
+KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<PointShape*, MemSpace>& shape_p,
+                                             const Kokkos::View<int*, MemSpace>& element_p,
+                                             const Kokkos::View<int*, MemSpace>& material_p,
+                                             const LiquidCarrying& liquid_m, int first, int count,
+                                             bool& wet, bool& one_element) {
+  if (first + kLanes > count) return false;
+  wet = liquid_m(material_p(first)) != 0;
+  one_element = true;
+  for (int p = first; p < first + kLanes; ++p) {
+    if (shape_p(p).node[0] < 0 || (liquid_m(material_p(p)) != 0) != wet) return false;
+    one_element = one_element && element_p(p) == element_p(first);
+  }
+  return true;
+}
+
 template <int kNodes>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
                          NodeRecords& records, GridFields& grid, const GridFields* compensation) {
-  const auto shape_p = shapes.shape_p;
-  const auto material_p = points.material;
-  const auto volume_p = points.volume;
-  const auto mass_solid_p = points.mass_solid;
-  const auto mass_liquid_p = points.mass_liquid;
-  const auto density_liquid_p = points.density_liquid;
-  const auto porosity_p = points.porosity;
-  const auto saturation_p = points.saturation;
-  const auto conductivity_p = points.conductivity;
-  const auto pressure_p = points.pressure_liquid;
-  const auto stress_p = points.stress_effective;
-  const auto velocity_solid_p = points.velocity_solid;
-  const auto velocity_liquid_p = points.velocity_liquid;
-
-  const auto body = KOKKOS_LAMBDA(const int p, const auto& sums, Real&, Real&, int&) {
-    const PointShape& shape = shape_p(p);
-    if (shape.node[0] < 0) return;
-    const Real volume = volume_p(p);
-    const Real m_solid = mass_solid_p(p);
-    const bool wet = liquid_m(material_p(p)) != 0;
-    const Real m_liquid = wet ? mass_liquid_p(p) : 0;
-    // Bishop total stress, chi = S_L (4.5), p_L compression positive.
-    const Real bishop = wet ? saturation_p(p) * pressure_p(p) : 0;
-    const Real sxx = stress_p(p, XX) - bishop;
-    const Real syy = stress_p(p, YY) - bishop;
-    const Real sxy = stress_p(p, XY);
-    const Real weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
-    const Real vsx = velocity_solid_p(p, 0), vsy = velocity_solid_p(p, 1);
-
-    for (int a = 0; a < kNodes; ++a) {
-      const auto node = sums.node(shape.node[a]);
-      const Real N = shape.value[a];
-      const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
-      node.add(kSumMassSolid, N * m_solid);
-      node.add(kSumMomentumSolid, N * m_solid * vsx);
-      node.add(kSumMomentumSolid + 1, N * m_solid * vsy);
-      node.add(kSumForceMixture, -(sxx * dx + sxy * dy) * volume);
-      node.add(kSumForceMixture + 1, -(sxy * dx + syy * dy) * volume + N * weight_mixture);
+  const P2GPointViews v{shapes.shape_p,         points.material,         points.volume,
+                        points.mass_solid,      points.mass_liquid,      points.density_liquid,
+                        points.porosity,        points.saturation,       points.conductivity,
+                        points.pressure_liquid, points.stress_effective, points.velocity_solid,
+                        points.velocity_liquid};
+  const auto element_p = points.element;
+  const int count = points.count;
+  // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
+  const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
+    const int first = chunk * kLanes;
+    bool wet = false, one_element = false;
+    if (lanesMapTogether(v.shape_p, element_p, v.material_p, liquid_m, first, count, wet,
+                         one_element)) {
+      mapPointToGrid<kNodes>(PointShapesAt<Lanes>(v.shape_p, first, one_element), wet, gravity, v,
+                             sums, first);
+      return;
     }
-    if (!wet) return;
-
-    const Real rho = density_liquid_p(p);
-    const Real m_intrinsic = rho * volume;  // 4.46
-    // Darcy drag per unit liquid volume n S_L rho_L g / k (4.2-4.3, 4.45), g = 9.81.
-    const Real drag =
-        porosity_p(p) * saturation_p(p) * rho * kStandardGravity / conductivity_p(p) * volume;
-    const Real pressure_volume = pressure_p(p) * volume;
-    const Real weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
-    const Real vlx = velocity_liquid_p(p, 0), vly = velocity_liquid_p(p, 1);
-    for (int a = 0; a < kNodes; ++a) {
-      const auto node = sums.node(shape.node[a]);
-      const Real N = shape.value[a];
-      node.add(kSumMassLiquid, N * m_liquid);
-      node.add(kSumMassIntrinsic, N * m_intrinsic);
-      node.add(kSumDrag, N * drag);
-      node.add(kSumVolumeLiquid, N * volume);
-      node.add(kSumMomentumLiquid, N * m_intrinsic * vlx);
-      node.add(kSumMomentumLiquid + 1, N * m_intrinsic * vly);
-      // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
-      node.add(kSumForceLiquid, shape.gradient[a][0] * pressure_volume);
-      node.add(kSumForceLiquid + 1, shape.gradient[a][1] * pressure_volume + N * weight_liquid);
+    for (int p = first; p < first + kLanes && p < count; ++p) {
+      if (v.shape_p(p).node[0] < 0) continue;
+      mapPointToGrid<kNodes>(PointShapesAt<Real>(v.shape_p, p), liquid_m(v.material_p(p)) != 0,
+                             gravity, v, sums, p);
     }
   };
-  scatterFromPoints("p2g_two_phase", points.count, body, active, records, grid, compensation,
-                    false);
+  scatterFromPoints("p2g_two_phase", (count + kLanes - 1) / kLanes, body, active, records, grid,
+                    compensation, false);
+}
+
+/// The point fields of the velocity update and remap.
+struct G2PPointViews {
+  Kokkos::View<Real*, MemSpace> volume_p, mass_solid_p, mass_liquid_p, density_liquid_p;
+  Kokkos::View<Real*[kDim], MemSpace> velocity_solid_p, velocity_liquid_p;
+};
+
+/// The velocity update of point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located
+/// and all `wet` or all dry, from the nodal values of readVelocityUpdateValues, and their
+/// momenta added to the nodes (the remap; slots 4-7, one block). The kinetic energies and
+/// the count of non-finite velocities are summed in point order.
+template <int kNodes, class T, class Values, class Sums>
+KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const PointShapesAt<T>& at, bool wet, Real dt,
+                                                  Real pic_solid, Real pic_liquid,
+                                                  const Values& values_i, const G2PPointViews& v,
+                                                  const Sums& sums, int p, Real& ks, Real& kl,
+                                                  int& bad) {
+  constexpr int kPoints = PointShapesAt<T>::kCount;
+  // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
+  // interpolation a loop of its own: the conditions are tested once per point, not per node.
+  T as[kDim] = {}, al[kDim] = {}, vs_grid[kDim] = {}, vl[kDim] = {};
+  const auto interpolate = [&](int slot, T sum[kDim]) {
+    for (int a = 0; a < kNodes; ++a) {
+      const T N = at.value(a);
+      for (int d = 0; d < kDim; ++d) sum[d] += N * at.nodal(values_i, a, slot + d);
+    }
+  };
+  interpolate(kReadAccelerationSolid, as);
+  if (pic_solid > 0 || (wet && pic_liquid > 0)) interpolate(kReadVelocitySolid, vs_grid);
+  if (wet) interpolate(kReadAccelerationLiquid, al);
+  if (wet && pic_liquid > 0) interpolate(kReadVelocityLiquid, vl);
+  T v_solid[kDim];
+  for (int d = 0; d < kDim; ++d) {
+    const T old = load<T>(v.velocity_solid_p, p, d);
+    v_solid[d] = old + dt * as[d] + pic_solid * (vs_grid[d] - old);
+    store(v.velocity_solid_p, p, d, v_solid[d]);
+  }
+  const T vsx = v_solid[0], vsy = v_solid[1];
+  const T ms = load<T>(v.mass_solid_p, p);
+  Real energy[kPoints];
+  spill(0.5 * ms * (vsx * vsx + vsy * vsy), energy);
+  const auto solid_finite = both(kmath::isFinite(vsx), kmath::isFinite(vsy));
+  for (int l = 0; l < kPoints; ++l) {
+    ks += energy[l];
+    if (!lane(solid_finite, l)) ++bad;
+  }
+  T row[kNodes][kNodeSumRow];
+  for (int a = 0; a < kNodes; ++a) {
+    const T N = at.value(a);
+    row[a][kSumMomentumSolid] = N * ms * vsx;
+    row[a][kSumMomentumSolid + 1] = N * ms * vsy;
+    row[a][kSumMomentumLiquid] = row[a][kSumMomentumLiquid + 1] = splat<T>(0);
+  }
+  if (wet) {
+    // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
+    // (the header); with pic_liquid = 0 this is FLIP.
+    T v_liquid[kDim];
+    for (int d = 0; d < kDim; ++d) {
+      const T flip = load<T>(v.velocity_liquid_p, p, d) + dt * al[d];
+      const T relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
+      v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
+    }
+    const T vlx = v_liquid[0], vly = v_liquid[1];
+    store(v.velocity_liquid_p, p, 0, vlx);
+    store(v.velocity_liquid_p, p, 1, vly);
+    spill(0.5 * load<T>(v.mass_liquid_p, p) * (vlx * vlx + vly * vly), energy);
+    const auto liquid_finite = both(kmath::isFinite(vlx), kmath::isFinite(vly));
+    for (int l = 0; l < kPoints; ++l) {
+      kl += energy[l];
+      if (!lane(liquid_finite, l)) ++bad;
+    }
+    const T ml = load<T>(v.density_liquid_p, p) * load<T>(v.volume_p, p);
+    for (int a = 0; a < kNodes; ++a) {
+      const T N = at.value(a);
+      row[a][kSumMomentumLiquid] = N * ml * vlx;
+      row[a][kSumMomentumLiquid + 1] = N * ml * vly;
+    }
+  }
+  static_assert(kSumMomentumSolid == kLanes && kSumMomentumLiquid + kDim == 2 * kLanes,
+                "the momenta fill block 1 of a row");
+  sums.template addRows<kNodes>(at, row, 1, 2, wet);
 }
 
 template <int kNodes>
@@ -194,72 +360,102 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const GridFields* compensation) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
-  const auto volume_p = points.volume;
-  const auto mass_solid_p = points.mass_solid;
-  const auto mass_liquid_p = points.mass_liquid;
-  const auto density_liquid_p = points.density_liquid;
-  const auto velocity_solid_p = points.velocity_solid;
-  const auto velocity_liquid_p = points.velocity_liquid;
+  const auto element_p = points.element;
+  const G2PPointViews v{points.volume,         points.mass_solid,     points.mass_liquid,
+                        points.density_liquid, points.velocity_solid, points.velocity_liquid};
   readVelocityUpdateValues(active, grid, records);
   const auto values_i = records.values_i;
   const Real pic_solid = blend.solid, pic_liquid = blend.liquid;
-  const auto body = KOKKOS_LAMBDA(const int p, const auto& sums, Real& ks, Real& kl, int& bad) {
-    const PointShape& shape = shape_p(p);
-    if (shape.node[0] < 0) return;
-    const bool wet = liquid_m(material_p(p)) != 0;
-    // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
-    // interpolation a loop of its own: the conditions are tested once per point, not per node.
-    Real as[kDim] = {0, 0}, al[kDim] = {0, 0}, vs_grid[kDim] = {0, 0}, vl[kDim] = {0, 0};
-    const auto interpolate = [&](int slot, Real sum[kDim]) {
-      for (int a = 0; a < kNodes; ++a)
-        for (int d = 0; d < kDim; ++d) sum[d] += shape.value[a] * values_i(shape.node[a], slot + d);
-    };
-    interpolate(kReadAccelerationSolid, as);
-    if (pic_solid > 0 || (wet && pic_liquid > 0)) interpolate(kReadVelocitySolid, vs_grid);
-    if (wet) interpolate(kReadAccelerationLiquid, al);
-    if (wet && pic_liquid > 0) interpolate(kReadVelocityLiquid, vl);
-    Real v_solid[kDim];
-    for (int d = 0; d < kDim; ++d) {
-      const Real v = velocity_solid_p(p, d);
-      v_solid[d] = v + dt * as[d] + pic_solid * (vs_grid[d] - v);
-      velocity_solid_p(p, d) = v_solid[d];
+  const int count = points.count;
+  // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
+  const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real& ks, Real& kl, int& bad) {
+    const int first = chunk * kLanes;
+    bool wet = false, one_element = false;
+    if (lanesMapTogether(shape_p, element_p, material_p, liquid_m, first, count, wet,
+                         one_element)) {
+      updatePointVelocityAt<kNodes>(PointShapesAt<Lanes>(shape_p, first, one_element), wet, dt,
+                                    pic_solid, pic_liquid, values_i, v, sums, first, ks, kl, bad);
+      return;
     }
-    const Real vsx = v_solid[0], vsy = v_solid[1];
-    const Real ms = mass_solid_p(p);
-    ks += 0.5 * ms * (vsx * vsx + vsy * vsy);
-    if (!(Kokkos::Experimental::isfinite(vsx) && Kokkos::Experimental::isfinite(vsy))) ++bad;
-    for (int a = 0; a < kNodes; ++a) {
-      const auto node = sums.node(shape.node[a]);
-      const Real N = shape.value[a];
-      node.add(kSumMomentumSolid, N * ms * vsx);
-      node.add(kSumMomentumSolid + 1, N * ms * vsy);
-    }
-    if (!wet) return;
-    // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
-    // (the header); with pic_liquid = 0 this is FLIP.
-    Real v_liquid[kDim];
-    for (int d = 0; d < kDim; ++d) {
-      const Real flip = velocity_liquid_p(p, d) + dt * al[d];
-      const Real relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
-      v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
-    }
-    const Real vlx = v_liquid[0], vly = v_liquid[1];
-    velocity_liquid_p(p, 0) = vlx;
-    velocity_liquid_p(p, 1) = vly;
-    kl += 0.5 * mass_liquid_p(p) * (vlx * vlx + vly * vly);
-    if (!(Kokkos::Experimental::isfinite(vlx) && Kokkos::Experimental::isfinite(vly))) ++bad;
-    const Real ml = density_liquid_p(p) * volume_p(p);
-    for (int a = 0; a < kNodes; ++a) {
-      const auto node = sums.node(shape.node[a]);
-      const Real N = shape.value[a];
-      node.add(kSumMomentumLiquid, N * ml * vlx);
-      node.add(kSumMomentumLiquid + 1, N * ml * vly);
+    for (int p = first; p < first + kLanes && p < count; ++p) {
+      if (shape_p(p).node[0] < 0) continue;
+      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shape_p, p), liquid_m(material_p(p)) != 0,
+                                    dt, pic_solid, pic_liquid, values_i, v, sums, p, ks, kl, bad);
     }
   };
-  return scatterFromPoints("g2p_velocities_p2g_momenta", points.count, body, active, records, grid,
-                           compensation, true);
+  return scatterFromPoints("g2p_velocities_p2g_momenta", (count + kLanes - 1) / kLanes, body,
+                           active, records, grid, compensation, true);
 }
 
+/// The strain, spin, displacement and liquid-divergence increments of point p (T = Real) or
+/// of points p .. p + kLanes - 1 (Lanes), all located and all `wet` or all dry, from the
+/// nodal values of readStrainValues (interpolateVelocityGradients).
+template <int kNodes, class T, class Values>
+KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const PointShapesAt<T>& at, bool wet, Real dt,
+                                               const Values& values_i, const PointRates& rates,
+                                               int p) {
+  T L[kDim][kDim] = {};  // L_jk = d v_S,j / d x_k
+  T v[kDim] = {};
+  for (int a = 0; a < kNodes; ++a) {
+    const T N = at.value(a);
+    const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
+    const T vx = at.nodal(values_i, a, kReadStrainVelocitySolid),
+            vy = at.nodal(values_i, a, kReadStrainVelocitySolid + 1);
+    L[0][0] += vx * dx;
+    L[0][1] += vx * dy;
+    L[1][0] += vy * dx;
+    L[1][1] += vy * dy;
+    v[0] += N * vx;
+    v[1] += N * vy;
+  }
+  store(rates.strain_increment_p, p, XX, dt * L[0][0]);
+  store(rates.strain_increment_p, p, YY, dt * L[1][1]);
+  store(rates.strain_increment_p, p, ZZ, splat<T>(0));                     // plane strain
+  store(rates.strain_increment_p, p, XY, 0.5 * dt * (L[0][1] + L[1][0]));  // tensor shear
+  store(rates.spin_increment_p, p, spinIncrement(dt, L[0][1], L[1][0]));   // Jaumann rotation
+  store(rates.displacement_increment_p, p, 0, dt * v[0]);
+  store(rates.displacement_increment_p, p, 1, dt * v[1]);
+
+  T divergence = {}, relative_divergence = {}, content = {};
+  T w[kDim] = {}, gradient[kDim] = {};
+  if (wet) {
+    // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
+    // at the element centre (N = 1/kNodes), not at the point: per-point values differ
+    // between rows of points in one element, a pressure mode the momentum equations
+    // cannot see (a one-element-wide quad4 column shows it), which then grows.
+    constexpr Real centre = Real(1) / kNodes;
+    for (int a = 0; a < kNodes; ++a) {
+      const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
+      const T vlx = at.nodal(values_i, a, kReadStrainVelocityLiquid),
+              vly = at.nodal(values_i, a, kReadStrainVelocityLiquid + 1);
+      const T wx = vlx - at.nodal(values_i, a, kReadStrainVelocitySolid),
+              wy = vly - at.nodal(values_i, a, kReadStrainVelocitySolid + 1);
+      const T c = at.nodal(values_i, a, kReadStrainLiquidContent);
+      divergence += vlx * dx + vly * dy;
+      relative_divergence += wx * dx + wy * dy;
+      w[0] += centre * wx;
+      w[1] += centre * wy;
+      content += centre * c;
+      gradient[0] += c * dx;
+      gradient[1] += c * dy;
+    }
+  }
+  store(rates.liquid_divergence_increment_p, p, dt * divergence);
+  store(rates.content_flux_divergence_increment_p, p,
+        dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]));
+}
+
+/// The increments of a point outside the mesh: none.
+KOKKOS_INLINE_FUNCTION void clearStrainIncrements(const PointRates& rates, int p) {
+  for (int c = 0; c < kStressComponents; ++c) rates.strain_increment_p(p, c) = 0;
+  rates.displacement_increment_p(p, 0) = rates.displacement_increment_p(p, 1) = 0;
+  rates.spin_increment_p(p) = 0;
+  rates.liquid_divergence_increment_p(p) = 0;
+  rates.content_flux_divergence_increment_p(p) = 0;
+}
+
+/// One call per kLanes consecutive points: all of them at once where they are located and
+/// all wet or all dry (strainIncrementsAt<Lanes>), else one by one. The same bits.
 template <int kNodes>
 void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                                       const LiquidCarrying& liquid_m, const ActiveNodes& active,
@@ -267,77 +463,35 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
                                       PointRates& rates) {
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
+  const auto element_p = points.element;
   records.allocate(grid.numNodes());
   readStrainValues(active, grid, records);
   const auto values_i = records.values_i;
-  const auto strain_increment_p = rates.strain_increment_p;
-  const auto divergence_p = rates.liquid_divergence_increment_p;
-  const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
-  const auto displacement_increment_p = rates.displacement_increment_p;
-  const auto spin_increment_p = rates.spin_increment_p;
+  const PointRates r = rates;
+  const int count = points.count;
   Kokkos::parallel_for(
-      "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p) {
-        const PointShape& shape = shape_p(p);
-        if (shape.node[0] < 0) {
-          for (int c = 0; c < kStressComponents; ++c) strain_increment_p(p, c) = 0;
-          displacement_increment_p(p, 0) = displacement_increment_p(p, 1) = 0;
-          spin_increment_p(p) = 0;
-          divergence_p(p) = 0;
-          flux_divergence_p(p) = 0;
+      "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, (count + kLanes - 1) / kLanes),
+      KOKKOS_LAMBDA(const int chunk) {
+        const int first = chunk * kLanes;
+        const int end = first + kLanes < count ? first + kLanes : count;
+        const bool wet = end > first && liquid_m(material_p(first)) != 0;
+        bool lanes = end - first == kLanes, one_element = true;
+        for (int p = first; p < end && lanes; ++p) {
+          lanes = shape_p(p).node[0] >= 0 && (liquid_m(material_p(p)) != 0) == wet;
+          one_element = one_element && element_p(p) == element_p(first);
+        }
+        if (lanes) {
+          strainIncrementsAt<kNodes>(PointShapesAt<Lanes>(shape_p, first, one_element), wet, dt,
+                                     values_i, r, first);
           return;
         }
-        Real L[kDim][kDim] = {{0, 0}, {0, 0}};  // L_jk = d v_S,j / d x_k
-        Real v[kDim] = {0, 0};
-        for (int a = 0; a < kNodes; ++a) {
-          const int i = shape.node[a];
-          const Real N = shape.value[a];
-          const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
-          const Real vx = values_i(i, kReadStrainVelocitySolid),
-                     vy = values_i(i, kReadStrainVelocitySolid + 1);
-          L[0][0] += vx * dx;
-          L[0][1] += vx * dy;
-          L[1][0] += vy * dx;
-          L[1][1] += vy * dy;
-          v[0] += N * vx;
-          v[1] += N * vy;
+        for (int p = first; p < end; ++p) {
+          if (shape_p(p).node[0] < 0)
+            clearStrainIncrements(r, p);
+          else
+            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shape_p, p),
+                                       liquid_m(material_p(p)) != 0, dt, values_i, r, p);
         }
-        strain_increment_p(p, XX) = dt * L[0][0];
-        strain_increment_p(p, YY) = dt * L[1][1];
-        strain_increment_p(p, ZZ) = 0;                               // plane strain
-        strain_increment_p(p, XY) = 0.5 * dt * (L[0][1] + L[1][0]);  // tensor shear
-        spin_increment_p(p) = spinIncrement(dt, L[0][1], L[1][0]);   // Jaumann rotation
-        displacement_increment_p(p, 0) = dt * v[0];
-        displacement_increment_p(p, 1) = dt * v[1];
-
-        Real divergence = 0, relative_divergence = 0, content = 0;
-        Real w[kDim] = {0, 0}, gradient[kDim] = {0, 0};
-        if (liquid_m(material_p(p)) != 0) {
-          // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
-          // at the element centre (N = 1/kNodes), not at the point: per-point values differ
-          // between rows of points in one element, a pressure mode the momentum equations
-          // cannot see (a one-element-wide quad4 column shows it), which then grows.
-          constexpr Real centre = Real(1) / kNodes;
-          for (int a = 0; a < kNodes; ++a) {
-            const int i = shape.node[a];
-            const Real dx = shape.gradient[a][0], dy = shape.gradient[a][1];
-            const Real vlx = values_i(i, kReadStrainVelocityLiquid),
-                       vly = values_i(i, kReadStrainVelocityLiquid + 1);
-            const Real wx = vlx - values_i(i, kReadStrainVelocitySolid),
-                       wy = vly - values_i(i, kReadStrainVelocitySolid + 1);
-            const Real c = values_i(i, kReadStrainLiquidContent);
-            divergence += vlx * dx + vly * dy;
-            relative_divergence += wx * dx + wy * dy;
-            w[0] += centre * wx;
-            w[1] += centre * wy;
-            content += centre * c;
-            gradient[0] += c * dx;
-            gradient[1] += c * dy;
-          }
-        }
-        divergence_p(p) = dt * divergence;
-        flux_divergence_p(p) =
-            dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]);
       });
 }
 

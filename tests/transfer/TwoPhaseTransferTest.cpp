@@ -4,8 +4,10 @@
 #include <random>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "TestScenes.hpp"
+#include "argine/core/Lanes.hpp"
 #include "argine/points/PointFields.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/GridFields.hpp"
@@ -424,6 +426,102 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
       EXPECT_EQ(a(i, d), b(i, d)) << i << " " << d;
       EXPECT_NEAR(a(i, d), c(i, d), 1e-14 * scale) << i << " " << d;
     }
+  }
+}
+
+/// The points of `points` in the order `from` gives (from[r] = the point at r), where -1 puts
+/// a point outside the mesh (element -1, the fields of point 0).
+MaterialPoints rearranged(const MaterialPoints& points, const std::vector<int>& from) {
+  MaterialPoints out;
+  out.allocate(static_cast<int>(from.size()));
+  forEachPointField(points, [&](const char* name, const auto& field) {
+    forEachPointField(out, [&](const char* other, auto& target) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(field)>, std::decay_t<decltype(target)>>)
+        if (std::string(name) == other)
+          for (std::size_t r = 0; r < from.size(); ++r) {
+            const int q = from[r] < 0 ? 0 : from[r];
+            if constexpr (std::decay_t<decltype(field)>::rank == 1)
+              target(r) = field(q);
+            else
+              for (std::size_t c = 0; c < field.extent(1); ++c) target(r, c) = field(q, c);
+          }
+    });
+  });
+  for (std::size_t r = 0; r < from.size(); ++r)
+    if (from[r] < 0) out.element(r) = -1;
+  return out;
+}
+
+TEST_P(TransferOnShape, LanesGiveTheOnePointResultsBitForBit) {
+  // The kernels take kLanes points at once where they can (all located, all wet or all dry)
+  // and one at a time otherwise; both must give the same bits. Run A: every fourth point
+  // onwards dry in blocks of kLanes, so every chunk takes the lanes. Run B: the same points
+  // in the same order with a point outside the mesh after every third, so no chunk does.
+  auto scene = randomScene(5, 4, 2.5, 2.0, GetParam(), 23);
+  const Mesh& mesh = scene.mesh;
+  MaterialPoints& points = scene.points;
+  for (int p = 0; p < points.count; ++p) points.material(p) = (p / kLanes) % 3 == 2 ? 1 : 0;
+  std::vector<int> same(points.count), spread;
+  for (int p = 0; p < points.count; ++p) {
+    same[p] = p;
+    spread.push_back(p);
+    if (p % 3 == 2) spread.push_back(-1);
+  }
+  struct Run {
+    MaterialPoints points;
+    PointShapes shapes;
+    GridFields grid, lo;
+    PointRates rates;
+  };
+  auto run = [&](const std::vector<int>& from, bool compensated) {
+    Run r;
+    r.points = rearranged(points, from);
+    evaluatePointShapes(mesh, r.points, r.shapes);
+    r.grid.allocate(mesh.numNodes());
+    r.lo.allocate(mesh.numNodes());
+    const ActiveNodes active = activeNodesOf(mesh, r.points);
+    NodeRecords records;
+    const GridFields* compensation = compensated ? &r.lo : nullptr;
+    mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, active, records, r.grid, compensation);
+    randomiseGrid(r.grid, mesh.numNodes(), 5);  // velocities and accelerations of a solve
+    updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3, {0.25, 0.5}, r.points,
+                                       records, r.grid, compensation);
+    interpolateVelocityGradients(r.points, r.shapes, liquidFlags(), active, r.grid, records, 1e-3,
+                                 r.rates);
+    return r;
+  };
+  for (const bool compensated : {false, true}) {
+    const Run a = run(same, compensated), b = run(spread, compensated);
+    for (auto field : {&GridFields::mass_solid_i, &GridFields::mass_liquid_i,
+                       &GridFields::mass_liquid_intrinsic_i, &GridFields::drag_i,
+                       &GridFields::volume_liquid_i}) {
+      const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
+      for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(x(i), y(i)) << i;
+    }
+    for (auto field : {&GridFields::momentum_solid_i, &GridFields::momentum_liquid_i,
+                       &GridFields::force_mixture_i, &GridFields::force_liquid_i}) {
+      const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
+      for (int i = 0; i < mesh.numNodes(); ++i)
+        for (int d = 0; d < kDim; ++d) EXPECT_EQ(x(i, d), y(i, d)) << i << " " << d;
+    }
+    int r = 0;  // point p of run A is point r of run B
+    for (int p = 0; p < points.count; ++p, ++r) {
+      while (spread[r] != p) ++r;
+      for (int d = 0; d < kDim; ++d) {
+        EXPECT_EQ(a.points.velocity_solid(p, d), b.points.velocity_solid(r, d)) << p;
+        EXPECT_EQ(a.points.velocity_liquid(p, d), b.points.velocity_liquid(r, d)) << p;
+        EXPECT_EQ(a.rates.displacement_increment_p(p, d), b.rates.displacement_increment_p(r, d));
+      }
+      for (int c = 0; c < kStressComponents; ++c)
+        EXPECT_EQ(a.rates.strain_increment_p(p, c), b.rates.strain_increment_p(r, c)) << p;
+      EXPECT_EQ(a.rates.spin_increment_p(p), b.rates.spin_increment_p(r)) << p;
+      EXPECT_EQ(a.rates.liquid_divergence_increment_p(p), b.rates.liquid_divergence_increment_p(r));
+      EXPECT_EQ(a.rates.content_flux_divergence_increment_p(p),
+                b.rates.content_flux_divergence_increment_p(r));
+    }
+    // Something happened: the velocities changed, but not a dry point's liquid one.
+    EXPECT_NE(a.points.velocity_solid(0, 0), points.velocity_solid(0, 0));
+    EXPECT_EQ(a.points.velocity_liquid(2 * kLanes, 0), points.velocity_liquid(2 * kLanes, 0));
   }
 }
 

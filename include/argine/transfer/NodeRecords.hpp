@@ -23,19 +23,27 @@ class ActiveNodes;
 struct GridFields;
 
 /// Slots of a P2G row (NodeRecords::sums_i): the sums of mapPointsToGrid, and the momenta
-/// again for the remap of updatePointVelocitiesAndMapMomenta. Vectors take kDim slots.
+/// again for the remap of updatePointVelocitiesAndMapMomenta. Vectors take kDim slots. The
+/// order puts the four momenta in one aligned block of kLanes slots (slots 4-7), which the
+/// remap adds with one vector instruction per node (TwoPhaseTransfer.cpp).
 enum NodeSumSlot : int {
   kSumMassSolid = 0,                              ///< M_S (4.40)
   kSumMassLiquid,                                 ///< M_L (4.39)
   kSumMassIntrinsic,                              ///< M~_L (4.38, 4.46)
   kSumDrag,                                       ///< Q_L (4.45)
-  kSumVolumeLiquid,                               ///< sum N V of liquid-carrying points
   kSumMomentumSolid,                              ///< x, y: sum N M_S v_S
   kSumMomentumLiquid = kSumMomentumSolid + kDim,  ///< x, y: sum N rho_L V v_L
-  kSumForceMixture = kSumMomentumLiquid + kDim,   ///< x, y: mixture f^ext - f^int (4.42, 4.44)
+  kSumVolumeLiquid = kSumMomentumLiquid + kDim,   ///< sum N V of liquid-carrying points
+  kSumForceMixture,                               ///< x, y: mixture f^ext - f^int (4.42, 4.44)
   kSumForceLiquid = kSumForceMixture + kDim,      ///< x, y: liquid f^ext - f^int (4.41, 4.43)
   kSumSlotCount = kSumForceLiquid + kDim
 };
+
+/// Whether a P2G slot is one a point without liquid adds to too (the solid and mixture sums).
+KOKKOS_INLINE_FUNCTION constexpr bool isSolidSumSlot(int slot) {
+  return slot == kSumMassSolid || slot == kSumMomentumSolid || slot == kSumMomentumSolid + 1 ||
+         slot == kSumForceMixture || slot == kSumForceMixture + 1;
+}
 
 /// Slots of a G2P row (NodeRecords::values_i) as the velocity update reads it.
 enum NodeVelocityUpdateSlot : int {
