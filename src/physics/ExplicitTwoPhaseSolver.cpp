@@ -274,6 +274,16 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     hydraulic_.plan(time_, gravity_, free_boundary_);
     hydraulic_plan_current_ = true;
     planned_gravity_ = gravity_;
+    const FluxCorrectionList& corrections = hydraulic_.corrections();
+    if (static_cast<int>(correction_locks_.extent(0)) != corrections.count())
+      correction_locks_ =
+          Kokkos::View<unsigned*, MemSpace>("correction_locks", corrections.count());
+    const auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), corrections.node);
+    auto locks = Kokkos::create_mirror_view(correction_locks_);
+    const NodalConstraints& constraints = boundaries_.constraints();
+    for (int j = 0; j < corrections.count(); ++j)
+      locks(j) = constraints.flagsOf(node(j)) & (kLiquidLockedX | kLiquidLockedY);
+    Kokkos::deep_copy(correction_locks_, locks);
   }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
@@ -292,8 +302,8 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
   // through their loads only (the river's thrust on the slope).
   if (hydraulic_.empty() || momentum_.liquid_with_solid) return;
   argine::correctHydraulicAccelerations(hydraulic_.corrections(), boundary_fields_, dt,
-                                        !momentum_.fixed_skeleton, reference_liquid_density_,
-                                        grid_);
+                                        !momentum_.fixed_skeleton, reference_liquid_density_, grid_,
+                                        correction_locks_);
   // Fixities and impermeable directions win over the correction at a node that has both:
   // the fixity's reaction takes the solid part, the impermeable lock the liquid part.
   applyAccelerationBoundaryConditions();
@@ -355,7 +365,8 @@ void ExplicitTwoPhaseSolver::updateNodalVelocities() {
     // constrained velocities (a lock across the face normal would change it afterwards)
     boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
     correctHydraulicVelocities(hydraulic_.corrections(), boundary_fields_,
-                               !momentum_.fixed_skeleton, reference_liquid_density_, grid_);
+                               !momentum_.fixed_skeleton, reference_liquid_density_, grid_,
+                               correction_locks_);
   }
   boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
 }

@@ -11,6 +11,7 @@
 /// Signs: p_L compression positive; n the OUTWARD unit normal; a flux q_out = w . n > 0
 /// leaves the soil (the deck's infiltration flux q is vertical rain: verticalRainOutwardFlux).
 
+#include "argine/boundary/NodalConstraints.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/input/Deck.hpp"
 
@@ -146,26 +147,45 @@ KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liqu
 /// The flux-weight form used by the solver: the node's outward liquid volume flux as the
 /// point mass balance sees it is w . G_i / rho_L (G_i the flux weight, HydraulicBoundaryStep),
 /// per unit face length |S_i| (S_i = sum of n L / 2 over the condition's sides at the node):
-///   measured = w~ . G_i / (rho_L |S_i|),  fraction = n . G_i / (rho_L |S_i|).
+///   measured = w~ . G_i / (rho_L |S_i|).
 /// After the correction the node passes exactly q_out |S_i| (m^2/s per m), so the liquid a
 /// condition lets through is the prescribed one even where the points no longer fill the
-/// elements (a deforming body: G_i is then not n_L rho_L S_i). For full Tri3 elements
-/// G_i = rho_L n_L S_i and this is the thesis form. Returns false (nothing set) when
-/// n . G_i <= 0 (no liquid behind the face along n): the caller uses the thesis form.
+/// elements (a deforming body: G_i is then not n_L rho_L S_i).
+///
+/// The correction acts along e = G_f / |G_f|, G_f = G_i without its components in the
+/// directions where the liquid is locked to the solid (`liquid_locked`, NodalConstraintBits:
+/// an impermeable lock, applied after the correction, would remove them again), with
+///   fraction = e . G_i / (rho_L |S_i|) = |G_f| / (rho_L |S_i|).
+/// w . G_i = q_out is a linear constraint on the relative velocity; its gradient is G_i, and
+/// the correction along it (within the free directions) is the smallest change of w that
+/// meets it: |dw| = |w~ . G_i / rho_L - q_out |S_i|| / |G_f|, never more than the relative
+/// velocity itself when the target is zero (seepage face). For full Tri3 elements
+/// G_i = rho_L n_L S_i, e = n and this is the thesis form (4.53-4.59). Correcting along the
+/// side normal n instead (with fraction n . G_i / (rho_L |S_i|)) is an oblique projection:
+/// where the body has deformed so that the free sides' normal is nearly perpendicular to G_i
+/// (a crack opening in a sliding slope) it divides by n . G_i -> 0+ and gave a node of the
+/// levee drawdown scene a relative velocity change of ~1000 m/s in one step.
+/// Returns false (nothing set) when G_f = 0 (no liquid flux through the node in the free
+/// directions): the caller uses the thesis form.
 KOKKOS_INLINE_FUNCTION bool fluxWeightCorrection(
     const Real weight[kDim], Real density, Real face_length, Real mass_liquid, Real mass_solid,
-    bool solid_moves, const Real normal[kDim], const Real velocity_liquid[kDim],
+    bool solid_moves, unsigned liquid_locked, const Real velocity_liquid[kDim],
     const Real velocity_solid[kDim], Real q_out, Real dv_liquid[kDim], Real dv_solid[kDim],
     Real& q_net) {
+  if (!(face_length > 0)) return false;
   const Real per_length = 1 / (density * face_length);
-  Real fraction = 0, measured = 0;
+  Real direction[kDim], length2 = 0, measured = 0;
   for (int d = 0; d < kDim; ++d) {
-    fraction += normal[d] * weight[d] * per_length;
+    direction[d] = (liquid_locked & liquidLockedBit(d)) ? Real(0) : weight[d];
+    length2 += direction[d] * direction[d];
     measured += (velocity_liquid[d] - velocity_solid[d]) * weight[d] * per_length;
   }
-  if (!(fraction > 0) || !(face_length > 0)) return false;
-  q_net = correctionOfMeasuredFlux(fraction, measured, mass_liquid, mass_solid, solid_moves, normal,
-                                   q_out, dv_liquid, dv_solid);
+  if (!(length2 > 0)) return false;
+  const Real length = Kokkos::Experimental::sqrt(length2);
+  for (int d = 0; d < kDim; ++d) direction[d] /= length;
+  const Real fraction = length * per_length;  // e . G_i / (rho_L |S_i|)
+  q_net = correctionOfMeasuredFlux(fraction, measured, mass_liquid, mass_solid, solid_moves,
+                                   direction, q_out, dv_liquid, dv_solid);
   return true;
 }
 

@@ -294,6 +294,9 @@ class ExplicitTwoPhaseSolver {
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
+  /// Per entry of hydraulic_.corrections(): the node's impermeable-lock bits (the flux
+  /// correction acts in the free directions only), refreshed with each plan.
+  Kokkos::View<unsigned*, MemSpace> correction_locks_;
   bool free_boundary_stale_ = true;      ///< a point changed element since the last detection
   bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
   Real planned_gravity_ = 0;             ///< the gravity of that plan

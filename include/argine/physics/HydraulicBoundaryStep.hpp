@@ -29,8 +29,13 @@
 /// surface, but at a corner where the condition covers one face only (the top corners of a
 /// column with sealed sides) 4.51 is diagonal, and correcting only the component of w along
 /// it leaves the tangential part, which crosses the face: a rain column measured 1000 x the
-/// rain through its top with 4.51. The node's flux is w . G_i, and for the condition's face
-/// G_i is parallel to its side normals, so correcting along them controls it exactly.
+/// rain through its top with 4.51. The side normals say where the condition is; the flux
+/// correction itself acts along the flux weight G_i (restricted to the directions no
+/// impermeable lock holds, fluxWeightCorrection): the node's flux is w . G_i, so that is the
+/// smallest correction that sets it. On the condition's face of full elements G_i is
+/// parallel to the side normals (the thesis form); on a deformed body it need not be, and a
+/// correction along the side normals divides by n . G_i, unbounded as they turn
+/// perpendicular (a crack opening in the levee drawdown slide: ~1000 m/s in one step).
 
 #include <vector>
 
@@ -89,15 +94,19 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);
 /// The node's flux is measured with its flux weight G_i (fluxWeightCorrection), so that the
 /// liquid the point mass balance lets through the node is exactly the prescribed one;
 /// `liquid_density` (kg/m^3) is the reference rho_L that converts G_i to volumes.
+/// `liquid_locked` (optional): per entry of `corrections`, the node's impermeable-lock bits
+/// (NodalConstraintBits); the correction leaves those directions alone (fluxWeightCorrection).
 void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
                                    const BoundaryGradientFields& fields, Real dt, bool solid_moves,
-                                   Real liquid_density, GridFields& grid);
+                                   Real liquid_density, GridFields& grid,
+                                   Kokkos::View<const unsigned*, MemSpace> liquid_locked = {});
 
 /// Re-imposes the applied corrections on the remapped nodal velocities v^{k+1}, so the
 /// relative flux used by the mass balance is the prescribed one.
 void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 const BoundaryGradientFields& fields, bool solid_moves,
-                                Real liquid_density, GridFields& grid);
+                                Real liquid_density, GridFields& grid,
+                                Kokkos::View<const unsigned*, MemSpace> liquid_locked = {});
 
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
