@@ -739,8 +739,11 @@ ListSchema guardKeys() {
                  .byDefault(1e-3));
   guards.add(KeySpec::real("Kinetic Energy Bound", "-",
                            "warn once when the kinetic energy exceeds this fraction of the "
-                           "stage's energy scale (weight x mesh extent + stored energy; the "
-                           "run stops at 10 x the scale)")
+                           "stage's energy scale (potential energy above the mesh's lowest "
+                           "point + stored and kinetic energy at the stage start + loads x "
+                           "mesh extent + energy of the liquid that entered: the most a "
+                           "stable stage can turn into motion; the run stops at 1 x the "
+                           "scale)")
                  .above(0)
                  .byDefault(0.1));
   return guards;

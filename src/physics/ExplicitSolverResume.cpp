@@ -11,7 +11,9 @@ ExplicitTwoPhaseSolver::ResumeState ExplicitTwoPhaseSolver::resumeState() const 
   ResumeState state;
   state.time = time_;
   state.diagnostics = diagnostics_;
-  state.energy_scale = energy_scale_;
+  state.stage_energies = stage_energies_;
+  state.load_bound = load_bound_;
+  state.inflow_energy = inflow_energy_;
   state.stage_started = stage_started_;
   // A step prepared at the end of the last one (several ranks) is not taken yet: the state
   // before it, which a resumed run prepares again.
@@ -26,7 +28,9 @@ void ExplicitTwoPhaseSolver::resume(const ResumeState& state) {
   diagnostics_ = state.diagnostics;
   prepared_time_step_ = false;  // chosen again by the next chooseTimeStep()
   if (state.stage_started) {
-    energy_scale_ = state.energy_scale;
+    stage_energies_ = state.stage_energies;
+    load_bound_ = state.load_bound;
+    inflow_energy_ = state.inflow_energy;
     time_step_.restore(state.time_step);
   }
   // The uninterrupted run relocated the points from these positions at the end of the last

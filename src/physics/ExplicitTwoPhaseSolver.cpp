@@ -23,6 +23,25 @@
 
 namespace argine {
 
+namespace {
+
+/// Sum over the load entries of |load| with the components along solid-fixed directions
+/// left out (N per m): what the loads can push the solid with (host, boundary-sized).
+Real freeLoadMagnitude(const NodalLoads& loads, const NodalConstraints& constraints) {
+  const auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), loads.node);
+  const auto mixture = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), loads.mixture);
+  Real sum = 0;
+  for (int j = 0; j < loads.count(); ++j) {
+    const unsigned fixed = constraints.flagsOf(node(j));
+    const Real x = (fixed & kSolidFixedX) ? Real(0) : mixture(j, 0);
+    const Real y = (fixed & kSolidFixedY) ? Real(0) : mixture(j, 1);
+    sum += std::hypot(x, y);
+  }
+  return sum;
+}
+
+}  // namespace
+
 ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints& points,
                                                const std::vector<MaterialSpec>& materials)
     : mesh_(mesh),
@@ -49,6 +68,8 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
       high[d] = i == 0 ? X(i, d) : std::max(high[d], X(i, d));
     }
   mesh_size_ = std::hypot(high[0] - low[0], high[1] - low[1]);
+  mesh_bottom_ = low[1];
+  mesh_top_ = high[1];
   grid_.allocate(mesh.numNodes());
   rates_.allocate(points.count);
   evaluatePointShapes(mesh_, points_, shapes_);
@@ -121,14 +142,18 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
         KOKKOS_LAMBDA(const int p) {
           for (int d = 0; d < kDim; ++d) pts.velocity_liquid(p, d) = pts.velocity_solid(p, d);
         });
-  if (ranks_) {  // the point sums over the ranks; the boundary loads once
-    std::vector<Real> scale{energyScale(points_, table_, gravity_, 0, mesh_size_)};
-    sumOverRanks(ranks_->comm(), scale);
-    energy_scale_ = scale[0] + boundaries_.totalLoadMagnitude() * mesh_size_;
-  } else {
-    energy_scale_ =
-        energyScale(points_, table_, gravity_, boundaries_.totalLoadMagnitude(), mesh_size_);
+  // The energy scale of the instability bound (stageEnergyScale): the points' energies now,
+  // summed over the ranks (the loads are the same on every rank); the hydraulic loads and
+  // the liquid inflow join it as the stage goes.
+  stage_energies_ = pointEnergies(points_, table_, gravity_, mesh_bottom_);
+  if (ranks_) {
+    std::vector<Real> sums{stage_energies_.potential, stage_energies_.stored,
+                           stage_energies_.kinetic};
+    sumOverRanks(ranks_->comm(), sums);
+    stage_energies_ = PointEnergies{sums[0], sums[1], sums[2]};
   }
+  load_bound_ = boundaries_.totalLoadMagnitude();
+  inflow_energy_ = 0;
   stage_started_ = true;
 }
 
@@ -284,6 +309,11 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     for (int j = 0; j < corrections.count(); ++j)
       locks(j) = constraints.flagsOf(node(j)) & (kLiquidLockedX | kLiquidLockedY);
     Kokkos::deep_copy(correction_locks_, locks);
+    // The energy scale's loads: the largest sum of load magnitudes so far, the hydraulic
+    // loads counted in the directions the solid may move (the river's pressure on a fixed
+    // end of the section does no work).
+    load_bound_ = std::max(load_bound_, boundaries_.totalLoadMagnitude() +
+                                            freeLoadMagnitude(hydraulic_.loads(), constraints));
   }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
@@ -505,7 +535,23 @@ void ExplicitTwoPhaseSolver::sortPoints() {
   profile_.sorts += 1;
 }
 
+void ExplicitTwoPhaseSolver::countInflowEnergy() {
+  // The liquid that entered through each condition in this step (over the ranks already)
+  // with the most energy per kg it can bring (StabilityCheck.hpp: inflowEnergyPerMass).
+  const auto& conditions = hydraulic_.conditions();
+  const auto& values = hydraulic_.currentValues();
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const Real mass = boundary_flux_volumes_[c] * reference_liquid_density_;
+    if (!(mass > 0)) continue;
+    const HydraulicCondition& h = conditions[c];
+    const Real above = h.above == AboveLevel::ConstantPressure ? h.pressure_above : 0;
+    inflow_energy_ += mass * inflowEnergyPerMass(h.kind, values[c], above, h.liquid_density,
+                                                 gravity_, mesh_top_, mesh_bottom_);
+  }
+}
+
 void ExplicitTwoPhaseSolver::checkStability(Real dt) {
+  if (!hydraulic_.empty()) countInflowEnergy();
   PointTotals totals = totals_;
   totals.kinetic_energy_solid = kinetic_.solid;
   totals.kinetic_energy_liquid = kinetic_.liquid;
@@ -534,12 +580,18 @@ void ExplicitTwoPhaseSolver::checkStability(Real dt) {
         << (point >= 0 ? describePoint(points_, point, true) : "on another MPI rank");
     fail(out.str());
   }
+  // A stable stage cannot turn more than the energy scale into motion (energyScale): above
+  // it the run made energy, i.e. it is unstable.
   const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
-  const Real bound = energy_growth_limit_ * energy_scale_;
+  const Real scale = stageEnergyScale();
+  const Real bound = energy_growth_limit_ * scale;
   if (kinetic > bound && kinetic > 0) {
     std::ostringstream out;
     out << "kinetic energy " << kinetic << " J/m exceeds " << energy_growth_limit_
-        << " x the stage's energy scale " << energy_scale_ << " J/m; most energetic: "
+        << " x the stage's energy scale " << scale << " J/m (at the stage start: potential "
+        << stage_energies_.potential << ", stored " << stage_energies_.stored << ", kinetic "
+        << stage_energies_.kinetic << " J/m; loads " << load_bound_ << " N/m x mesh extent "
+        << mesh_size_ << " m; liquid inflow " << inflow_energy_ << " J/m); most energetic: "
         << (points_.count > 0 ? describePoint(points_, mostEnergeticPoint(points_), false)
                               : "on another MPI rank");
     fail(out.str());

@@ -1,5 +1,6 @@
 #include "argine/physics/StabilityCheck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -154,17 +155,38 @@ Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& tabl
   return stored;
 }
 
-Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real gravity,
-                 Real boundary_load, Real size) {
+PointEnergies pointEnergies(const MaterialPoints& points, const MaterialTable& table, Real gravity,
+                            Real datum) {
   const MaterialPoints pts = points;
-  Real weight = 0;
+  Real height = 0;  // sum M max(y - datum, 0) over the points inside the mesh
   Kokkos::parallel_reduce(
-      "energy_scale_weight", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p, Real& w) { w += pts.mass_solid(p) + pts.mass_liquid(p); }, weight);
-  const Real stored = storedElasticEnergy(points, table);
+      "energy_scale_potential", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, Real& sum) {
+        if (pts.element(p) < 0) return;  // left the mesh: frozen, releases nothing more
+        const Real above = pts.position(p, 1) - datum;
+        if (above > 0) sum += (pts.mass_solid(p) + pts.mass_liquid(p)) * above;
+      },
+      height);
+  PointEnergies energies;
+  energies.potential = gravity * height;
+  energies.stored = storedElasticEnergy(points, table);
   const PointTotals totals = sumPointTotals(points);
-  const Real kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
-  return (weight * gravity + boundary_load) * size + stored + kinetic;
+  energies.kinetic = totals.kinetic_energy_solid + totals.kinetic_energy_liquid;
+  return energies;
+}
+
+Real inflowEnergyPerMass(BoundaryKind kind, Real value, Real pressure_above, Real liquid_density,
+                         Real gravity, Real top, Real datum) {
+  const Real lift = gravity * (top - datum);  // entering at the top of the mesh
+  switch (kind) {
+    case BoundaryKind::TotalHead:  // g (H - datum) below the level, the pressure above it
+      return std::max(gravity * (value - datum), lift) +
+             std::max<Real>(pressure_above, 0) / liquid_density;
+    case BoundaryKind::PressureSeries:
+      return lift + std::max<Real>(value, 0) / liquid_density;
+    default:  // infiltration (rain at p_L <= 0), seepage face (outflow only)
+      return lift;
+  }
 }
 
 }  // namespace argine

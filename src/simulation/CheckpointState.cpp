@@ -45,7 +45,11 @@ void putSolver(CheckpointWriter& out, const ExplicitTwoPhaseSolver::ResumeState&
   out.put<std::int32_t>(d.lost_points);
   out.put<std::int32_t>(d.active_nodes);
   putChoice(out, d.time_step_choice);
-  out.put<Real>(s.energy_scale);
+  out.put<Real>(s.stage_energies.potential);
+  out.put<Real>(s.stage_energies.stored);
+  out.put<Real>(s.stage_energies.kinetic);
+  out.put<Real>(s.load_bound);
+  out.put<Real>(s.inflow_energy);
   out.put<std::uint8_t>(s.stage_started);
   out.put<std::uint8_t>(s.time_step.stale);
   out.put<std::int32_t>(s.time_step.calls_since_update);
@@ -65,7 +69,11 @@ ExplicitTwoPhaseSolver::ResumeState getSolver(CheckpointReader& in) {
   d.lost_points = in.get<std::int32_t>();
   d.active_nodes = in.get<std::int32_t>();
   d.time_step_choice = getChoice(in);
-  s.energy_scale = in.get<Real>();
+  s.stage_energies.potential = in.get<Real>();
+  s.stage_energies.stored = in.get<Real>();
+  s.stage_energies.kinetic = in.get<Real>();
+  s.load_bound = in.get<Real>();
+  s.inflow_energy = in.get<Real>();
   s.stage_started = in.get<std::uint8_t>() != 0;
   s.time_step.stale = in.get<std::uint8_t>() != 0;
   s.time_step.calls_since_update = in.get<std::int32_t>();

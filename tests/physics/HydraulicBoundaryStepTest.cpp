@@ -3,6 +3,7 @@
 // with the point mass balance, and a head load that follows a moving surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "Harness.hpp"
@@ -147,6 +148,27 @@ TEST(HydraulicStep, RainIntoADryColumnIsImposedAndAccountedExactly) {
   EXPECT_NEAR(all_nodes, storage, 1e-9 * std::fabs(storage));  // the identity
   EXPECT_NEAR(rain, storage, 1e-6 * std::fabs(storage));       // only the top passes liquid
   EXPECT_NEAR(rain, 2e-6, 1e-9 * 2e-6);  // q imposed exactly (flux-weight correction)
+}
+
+TEST(HydraulicStep, RainEnteringRaisesTheEnergyScaleByItsPotentialEnergyAtTheTop) {
+  // The column above with gravity: the energy scale of the instability bound grows by the
+  // mass of the rain that entered times g times the height of the mesh's top above its
+  // bottom (1 m): 1000 kg/m^3 x 2e-6 m^3/m x 9.81 x 1 = 0.01962 J/m in 2 s. The scale computed
+  // once at the stage start (the code up to 6667f6f) would not see it.
+  SiltColumn column(10, 0.1, 1.0, -1e5, 4.905e-4);
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
+  boundaries.push_back(rainOnTop(1e-5, false, 1.0));
+  solver.beginStage(
+      test::makeStage("rain", SolverKind::FixedSkeleton, 9.81, 0.0, boundaries,
+                      {CriterionKind::UnsaturatedLiquid, CriterionKind::Infiltration}));
+  const Real rho = solver.referenceLiquidDensity();
+  const Real start = solver.stageEnergyScale();
+  Real entered = 0;  // m^3/m, the steps' inflows through the rain nodes
+  test::runUntil(solver, 2.0, [&] { entered += std::max(solver.boundaryFluxVolumes()[0], 0.0); });
+  EXPECT_NEAR(entered, 2e-6, 1e-6 * 2e-6);
+  EXPECT_NEAR(solver.stageEnergyScale() - start, rho * entered * 9.81 * 1.0, 1e-9 * start);
+  EXPECT_NEAR(solver.stageEnergyScale() - start, 0.01962, 1e-6);
 }
 
 TEST(HydraulicStep, CorrectionKernelKeepsTheMixtureMomentum) {

@@ -168,14 +168,19 @@ class ExplicitTwoPhaseSolver {
   const std::vector<Real>& boundaryFluxVolumes() const { return boundary_flux_volumes_; }
   /// rho_L converting liquid masses to volumes: that of the first liquid-carrying material.
   Real referenceLiquidDensity() const { return reference_liquid_density_; }
-  /// The stage's energy scale (J/m) of the instability bound (StabilityCheck.hpp).
-  Real stageEnergyScale() const { return energy_scale_; }
+  /// The energy scale (J/m) of the instability bound (StabilityCheck.hpp: energyScale) as it
+  /// stands after the last step: the points' energy at the stage start, plus the largest
+  /// load of the stage so far times the mesh's extent, plus the energy of the liquid that
+  /// entered so far.
+  Real stageEnergyScale() const {
+    return energyScale(stage_energies_, load_bound_, mesh_size_, inflow_energy_);
+  }
   /// The nodal fields of the hydraulic conditions of the last step (4.51, n_L, G_i).
   const BoundaryGradientFields& boundaryGradients() const { return boundary_fields_; }
 
-  /// The kinetic energy may not exceed this factor times the energy scale of the stage
-  /// ((weight + boundary loads) x mesh size + stored elastic energy + initial kinetic energy,
-  /// see StabilityCheck.hpp). Default 10.
+  /// The kinetic energy may not exceed this factor times stageEnergyScale(). Default 1: the
+  /// scale bounds what a stable stage can turn into motion (StabilityCheck.hpp, energyScale),
+  /// so only a run that makes energy gets there.
   void setEnergyGrowthLimit(Real factor) { energy_growth_limit_ = factor; }
 
   /// Sort the points by element every `steps` steps (0: never, the default, so that a
@@ -229,9 +234,11 @@ class ExplicitTwoPhaseSolver {
   /// a function of the points and is derived again by resume().
   struct ResumeState {
     Real time = 0;
-    StepDiagnostics diagnostics;  ///< its step count drives the sort interval
-    Real energy_scale = 0;        ///< of the stage, from the points at its start
-    bool stage_started = false;   ///< false: checkpoint at a stage boundary
+    StepDiagnostics diagnostics;   ///< its step count drives the sort interval
+    PointEnergies stage_energies;  ///< of the energy scale: the points at the stage start
+    Real load_bound = 0;           ///< of the energy scale: largest load so far (N/m)
+    Real inflow_energy = 0;        ///< of the energy scale: brought by entering liquid (J/m)
+    bool stage_started = false;    ///< false: checkpoint at a stage boundary
     TimeStepControl::State time_step;
   };
   ResumeState resumeState() const;
@@ -263,6 +270,8 @@ class ExplicitTwoPhaseSolver {
   void updateActiveNodes();
   void sortPoints();
   void checkStability(Real dt);
+  /// Adds the energy of this step's liquid inflow to the energy scale (inflow_energy_).
+  void countInflowEnergy();
   /// The points were permuted or moved between ranks: choices follow their point by id.
   void pointsReordered();
   /// Forgets a step prepared at the end of the last step (the state it came from changed).
@@ -317,9 +326,14 @@ class ExplicitTwoPhaseSolver {
   StepDiagnostics diagnostics_;
   PointTotals totals_;     ///< point sums of the last step's state update
   KineticTotals kinetic_;  ///< kinetic sums of the last step's velocity update
-  Real energy_scale_ = 0;
-  Real mesh_size_ = 0;  ///< diagonal of the mesh's bounding box (m)
-  Real energy_growth_limit_ = 10;
+  // The energy scale of the instability bound (stageEnergyScale):
+  PointEnergies stage_energies_;  ///< the points' energies at the stage start
+  Real load_bound_ = 0;           ///< largest sum of load magnitudes of the stage so far (N/m)
+  Real inflow_energy_ = 0;        ///< energy of the liquid that entered in the stage (J/m)
+  Real mesh_size_ = 0;            ///< diagonal of the mesh's bounding box (m)
+  Real mesh_bottom_ = 0;          ///< lowest y of the mesh (m): the datum of the potential energy
+  Real mesh_top_ = 0;             ///< highest y of the mesh (m)
+  Real energy_growth_limit_ = 1;
   int sort_interval_ = 0;
   StepProfile profile_;
   std::vector<Kokkos::View<Real*, MemSpace>> output_;  ///< scalar copies for nodalFields()

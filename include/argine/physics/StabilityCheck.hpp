@@ -8,6 +8,7 @@
 
 #include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/input/Deck.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/points/MaterialPoints.hpp"
 
@@ -82,11 +83,47 @@ std::string describePoint(const MaterialPoints& points, int index, bool non_fini
 /// stage's relaxation test (simulation/RelaxationMonitor.hpp).
 Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& table);
 
-/// A load-and-stored-energy scale of the current state (J per m): (weight + boundary loads)
-/// times `size` (the extent of the background mesh: nothing falls or is pushed further), the
-/// elastic energy of the effective stress and of the liquid pressure, and the kinetic energy.
-/// The instability bound is a multiple of it: no stable run turns more energy into motion.
-Real energyScale(const MaterialPoints& points, const MaterialTable& table, Real gravity,
-                 Real boundary_load, Real size);
+/// The parts of the energy scale that are sums over the points (J per m; on several ranks a
+/// rank's share, to be summed over the ranks).
+struct PointEnergies {
+  /// sum (M_S + M_L) g max(y - datum, 0) over the points inside the mesh (element >= 0): with
+  /// gravity along -y and `datum` the lowest y of the background mesh, the most the weight
+  /// of the points can release (nothing inside the mesh falls below its lowest point; a
+  /// point that left the mesh is frozen and releases nothing more).
+  Real potential = 0;
+  Real stored = 0;   ///< storedElasticEnergy
+  Real kinetic = 0;  ///< sum 1/2 M_S |v_S|^2 + 1/2 M_L |v_L|^2
+};
+
+/// The point sums of the energy scale of the current state; `gravity` (m/s^2) along -y.
+PointEnergies pointEnergies(const MaterialPoints& points, const MaterialTable& table, Real gravity,
+                            Real datum);
+
+/// The energy scale of the instability bound (J per m): an upper bound of the kinetic energy
+/// a stable stage can reach. Energy balance of the stage: KE(t) + PE(t) + stored(t) +
+/// dissipated = E(0) + work of the loads + energy of the liquid that entered; PE above the
+/// datum, stored energy and dissipation (plasticity, drag, damping) are >= 0, so
+///   KE(t) <= points.potential + points.stored + points.kinetic   (E(0), at the stage start)
+///            + load x size                                         (work of the loads)
+///            + inflow                                              (liquid that entered)
+/// with `load` (N per m) the largest sum of load magnitudes of the stage so far and `size`
+/// (m) the extent of the background mesh (nothing is pushed further), and `inflow` (J per m)
+/// the energy the liquid entering through hydraulic conditions brought with it
+/// (inflowEnergyPerMass). The one formula of the scale: the solver's stop and the
+/// Kinetic Energy Bound warning both read it.
+inline Real energyScale(const PointEnergies& points, Real load, Real size, Real inflow) {
+  return points.potential + points.stored + points.kinetic + load * size + inflow;
+}
+
+/// Energy per kg (J/kg) of liquid entering the soil, above `datum`, bounded over the
+/// condition's boundary: its potential energy at the highest point it can enter (`top`, the
+/// highest y of the mesh, or a total head H above it) plus its pressure work p / rho_L where
+/// the pressure is positive (under a total head g (H - y) + g (y - datum) = g (H - datum)).
+/// `value`: the condition's current head (m) or pressure (Pa); `pressure_above`: the constant
+/// pressure above a head's level (Pa). Infiltration without ponding enters at p_L <= 0 and
+/// a seepage face lets liquid out only: g (top - datum). Not bounded: the pressure that
+/// ponding rain (imposed whatever the pressure) may build up.
+Real inflowEnergyPerMass(BoundaryKind kind, Real value, Real pressure_above, Real liquid_density,
+                         Real gravity, Real top, Real datum);
 
 }  // namespace argine

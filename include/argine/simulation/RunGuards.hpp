@@ -7,7 +7,8 @@
 ///   once (the two agree to round-off when the flux accounting is right, doc/verification.md
 ///   V6);
 /// - the kinetic energy above Guards/Kinetic Energy Bound x the stage's energy scale warns
-///   once (the solver stops the run at 10 x the scale);
+///   once (the solver stops the run at 1 x the scale, an upper bound of what a stable stage
+///   can turn into motion: StabilityCheck.hpp, energyScale);
 /// - material points that left the background mesh (element -1: they carry no shape
 ///   functions, so they no longer take part) stop the run with a RunError naming time, step,
 ///   point id and position, or, with `Points Leaving Mesh: remove`, are taken out of the
