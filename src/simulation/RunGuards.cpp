@@ -33,6 +33,7 @@ void RunGuards::beginStage(Real storage, Real inflow, Real initial_volume) {
   storage_0_ = storage;
   inflow_0_ = inflow;
   initial_volume_ = initial_volume;
+  peak_ratio_ = -1;
 }
 
 std::string RunGuards::checkMassBalance(Real storage, Real inflow, const GuardPlace& place) {
@@ -50,6 +51,12 @@ std::string RunGuards::checkMassBalance(Real storage, Real inflow, const GuardPl
 }
 
 std::string RunGuards::checkKineticEnergy(Real kinetic, Real scale, const GuardPlace& place) {
+  if (scale > 0 && kinetic / scale > peak_ratio_) {
+    peak_ratio_ = kinetic / scale;
+    peak_kinetic_ = kinetic;
+    peak_scale_ = scale;
+    peak_place_ = place;
+  }
   if (energy_warned_ || !(scale > 0)) return "";
   const Real bound = spec_.kinetic_energy_bound * scale;
   if (!(kinetic > bound)) return "";
@@ -58,6 +65,16 @@ std::string RunGuards::checkKineticEnergy(Real kinetic, Real scale, const GuardP
   out << "kinetic energy " << kinetic << " J/m exceeds Guards/Kinetic Energy Bound "
       << spec_.kinetic_energy_bound << " x the stage's energy scale " << scale << " J/m = " << bound
       << " J/m " << at(place) << " (warned once)";
+  return out.str();
+}
+
+std::string RunGuards::kineticEnergyPeak(const std::string& stage) const {
+  if (!(peak_ratio_ >= 0)) return "";
+  std::ostringstream out;
+  out << "stage '" << stage << "': largest kinetic energy " << peak_kinetic_ << " J/m "
+      << at(peak_place_) << " = " << peak_ratio_ << " x the energy scale " << peak_scale_
+      << " J/m (Guards/Kinetic Energy Bound warns above " << spec_.kinetic_energy_bound
+      << " x, the run stops above 1 x)";
   return out.str();
 }
 

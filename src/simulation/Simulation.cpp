@@ -256,6 +256,9 @@ void Simulation::runStage(const StageSpec& stage) {
                   stage.relaxation.kinetic_energy_ratio);
     log(line);
   }
+  // The stage's margin below the kinetic energy guard (RunGuards.hpp).
+  const std::string peak = guards_->kineticEnergyPeak(stage.name);
+  if (!peak.empty()) log(peak);
   progress_->endStage(summary_.steps, solver_->time(), dt);
 }
 

@@ -58,6 +58,24 @@ TEST(RunGuards, KineticEnergyWarnsOnceAboveTheFractionOfTheScale) {
   EXPECT_EQ(guards.checkKineticEnergy(40.0, 50.0, {0.3, 5, "s"}), "");
 }
 
+TEST(RunGuards, KineticEnergyPeakIsTheStagesLargestRatioToTheScale) {
+  GuardsSpec spec;  // default bound 0.1
+  RunGuards guards(spec);
+  guards.beginStage(0, 0, 0);
+  EXPECT_EQ(guards.kineticEnergyPeak("s"), "");  // no step checked yet
+  // ratios 0.02, 0.05 (the peak: 3 J/m of a scale of 60 J/m grown from 50), 0.04
+  guards.checkKineticEnergy(1.0, 50.0, {0.1, 1, "s"});
+  guards.checkKineticEnergy(3.0, 60.0, {0.2, 2, "s"});
+  guards.checkKineticEnergy(2.4, 60.0, {0.3, 3, "s"});
+  const std::string line = guards.kineticEnergyPeak("s");
+  EXPECT_TRUE(contains(line, "stage 's': largest kinetic energy 3 J/m at t = 0.2 s (step 2"))
+      << line;
+  EXPECT_TRUE(contains(line, "= 0.05 x the energy scale 60 J/m")) << line;
+  EXPECT_TRUE(contains(line, "warns above 0.1 x, the run stops above 1 x")) << line;
+  guards.beginStage(0, 0, 0);  // a new stage starts its own peak
+  EXPECT_EQ(guards.kineticEnergyPeak("t"), "");
+}
+
 // A saturated column 0.1 m x 1 m with no support: it falls under gravity and its lowest
 // points leave the mesh through the bottom after about sqrt(2 x 0.021 / 9.81) = 0.066 s.
 const std::string kFallingColumn = R"(argine:

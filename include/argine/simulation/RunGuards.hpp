@@ -8,7 +8,8 @@
 ///   V6);
 /// - the kinetic energy above Guards/Kinetic Energy Bound x the stage's energy scale warns
 ///   once (the solver stops the run at 1 x the scale, an upper bound of what a stable stage
-///   can turn into motion: StabilityCheck.hpp, energyScale);
+///   can turn into motion: StabilityCheck.hpp, energyScale); the stage's largest ratio of the
+///   two is logged when it ends (the margin of the run);
 /// - material points that left the background mesh (element -1: they carry no shape
 ///   functions, so they no longer take part) stop the run with a RunError naming time, step,
 ///   point id and position, or, with `Points Leaving Mesh: remove`, are taken out of the
@@ -43,8 +44,14 @@ class RunGuards {
   /// exceeds the bound, "" otherwise.
   std::string checkMassBalance(Real storage, Real inflow, const GuardPlace& place);
 
-  /// Returns a warning the first time in the run `kinetic` > bound x `scale` (J/m).
+  /// Returns a warning the first time in the run `kinetic` > bound x `scale` (J/m). Also
+  /// keeps the stage's largest kinetic / scale (kineticEnergyPeak).
   std::string checkKineticEnergy(Real kinetic, Real scale, const GuardPlace& place);
+
+  /// "stage '<name>': largest kinetic energy <E> J/m at t = <t> s (step <n>) = <r> x the
+  /// energy scale <S> J/m ..." for the stage's largest ratio since beginStage, or "" when no
+  /// step was checked. Since a restart only, on a restarted run.
+  std::string kineticEnergyPeak(const std::string& stage) const;
 
   /// Points outside the mesh (element < 0). None new: "". Stop: throws RunError naming the
   /// count, time, step, stage and the first point's id and position. Remove: zeroes their
@@ -58,6 +65,8 @@ class RunGuards {
   Real storage_0_ = 0, inflow_0_ = 0, initial_volume_ = 0;
   bool mass_warned_ = false;
   bool energy_warned_ = false;
+  Real peak_ratio_ = -1, peak_kinetic_ = 0, peak_scale_ = 0;  ///< the stage's largest ratio
+  GuardPlace peak_place_;
   int removed_ = 0;
 };
 
