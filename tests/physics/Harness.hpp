@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "../transfer/TestScenes.hpp"
+#include "argine/core/Error.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/PointInitialisation.hpp"
 
@@ -41,6 +44,18 @@ inline void runUntil(ExplicitTwoPhaseSolver& solver, Real end,
     solver.step(dt);
     if (each) each();
   }
+}
+
+/// The message of the RunError that `action` throws; records a test failure and returns ""
+/// when it throws none.
+inline std::string runErrorMessage(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const RunError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "expected RunError";
+  return "";
 }
 
 /// A one-element-wide column of ny quads, width w, height h, all material 0, initialised.

@@ -114,6 +114,16 @@ BoundarySpec rainOnTop(Real flux, bool ponding, Real top) {
   return rain;
 }
 
+/// A fixed-skeleton stage raining 1e-5 m/s (no ponding) on the top (y = 1 m) of a sealed
+/// column, time step from the unsaturated-liquid and infiltration criteria.
+void beginRainStage(ExplicitTwoPhaseSolver& solver, Real gravity) {
+  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
+  boundaries.push_back(rainOnTop(1e-5, false, 1.0));
+  solver.beginStage(
+      test::makeStage("rain", SolverKind::FixedSkeleton, gravity, 0.0, boundaries,
+                      {CriterionKind::UnsaturatedLiquid, CriterionKind::Infiltration}));
+}
+
 Real liquidMass(const MaterialPoints& points) {
   const auto m = hostCopy(points.mass_liquid);
   Real sum = 0;
@@ -130,11 +140,7 @@ TEST(HydraulicStep, RainIntoADryColumnIsImposedAndAccountedExactly) {
   // Tri3 column with sealed sides).
   SiltColumn column(10, 0.1, 1.0, -1e5, 4.905e-4);
   ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
-  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
-  boundaries.push_back(rainOnTop(1e-5, false, 1.0));
-  solver.beginStage(
-      test::makeStage("rain", SolverKind::FixedSkeleton, 0.0, 0.0, boundaries,
-                      {CriterionKind::UnsaturatedLiquid, CriterionKind::Infiltration}));
+  beginRainStage(solver, 0.0);
   const Real rho = solver.referenceLiquidDensity();
   const Real initial = liquidMass(column.points);
   Real rain = 0, all_nodes = 0;
@@ -157,11 +163,7 @@ TEST(HydraulicStep, RainEnteringRaisesTheEnergyScaleByItsPotentialEnergyAtTheTop
   // once at the stage start (the code up to 6667f6f) would not see it.
   SiltColumn column(10, 0.1, 1.0, -1e5, 4.905e-4);
   ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
-  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
-  boundaries.push_back(rainOnTop(1e-5, false, 1.0));
-  solver.beginStage(
-      test::makeStage("rain", SolverKind::FixedSkeleton, 9.81, 0.0, boundaries,
-                      {CriterionKind::UnsaturatedLiquid, CriterionKind::Infiltration}));
+  beginRainStage(solver, 9.81);
   const Real rho = solver.referenceLiquidDensity();
   const Real start = solver.stageEnergyScale();
   Real entered = 0;  // m^3/m, the steps' inflows through the rain nodes
