@@ -181,6 +181,11 @@ RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator&
                                            PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
+  const bool with_maps = maps.count() == mesh.numElements() && mesh.numElements() > 0;
+  shapes.inverse_jacobian_e =
+      with_maps ? maps.inverse_jacobian_e : decltype(maps.inverse_jacobian_e){};
+  shapes.affine_e = with_maps ? maps.affine_e : decltype(maps.affine_e){};
+  shapes.connectivity = with_maps ? mesh.connectivity : decltype(mesh.connectivity){};
   return withShape(mesh.type, [&](auto shape) {
     return relocate<decltype(shape)>(mesh, locator, maps, points, shapes);
   });
@@ -194,6 +199,9 @@ int relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator, Mat
 void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
+  shapes.inverse_jacobian_e = {};
+  shapes.affine_e = {};
+  shapes.connectivity = {};
   withShape(mesh.type, [&](auto shape) { evaluate<decltype(shape)>(mesh, points, shapes); });
 }
 

@@ -5,6 +5,7 @@
 #include "PointShapesAt.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
+#include "argine/mesh/ShapeFunctions.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
@@ -28,6 +29,25 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
     f(std::integral_constant<int, 4>{});
 }
 
+/// The element of the transfers' kNodes.
+template <int kNodes>
+using ShapeOf = std::conditional_t<kNodes == 3, Tri3, Quad4>;
+
+/// Calls f(at) with the shapes of the kLanes points from `first`, all located: computed from
+/// their local coordinates (AffineShapesAt) when they lie in one affine element and `shapes`
+/// allows it (fromAffineMaps), else read from their records (PointShapesAt<Lanes>). The same
+/// bits either way.
+template <int kNodes, class LocalView, class F>
+KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, bool affine_maps,
+                                           const LocalView& local_p, int element, int first,
+                                           bool one_element, const F& f) {
+  if (one_element && affine_maps && shapes.affine_e(element)) {
+    f(AffineShapesAt<ShapeOf<kNodes>>(shapes, local_p, first, element));
+    return;
+  }
+  f(PointShapesAt<Lanes>(shapes.shape_p, first, one_element));
+}
+
 /// Where a P2G kernel adds its points' contributions, as rows of slots (NodeSumSlot) per
 /// point and node, for one point (T = Real) or kLanes points (T = Lanes): row[a][slot] for
 /// the point's node a, added for the blocks of kLanes slots [first_block, end_block). Every
@@ -44,11 +64,10 @@ struct PackedSums {
   Access& access;
   Kokkos::View<Real* [kNodeSumRow], MemSpace> rows;
 
-  template <int kNodes, class T>
-  KOKKOS_INLINE_FUNCTION void addRows(const PointShapesAt<T>& at,
-                                      const T (&row)[kNodes][kNodeSumRow], int first_block,
-                                      int end_block, bool /*wet*/) const {
-    constexpr int kPoints = PointShapesAt<T>::kCount;
+  template <int kNodes, class At, class T>
+  KOKKOS_INLINE_FUNCTION void addRows(const At& at, const T (&row)[kNodes][kNodeSumRow],
+                                      int first_block, int end_block, bool /*wet*/) const {
+    constexpr int kPoints = At::kCount;
     constexpr int kBlocks = kNodeSumRow / kLanes;
     Lanes block[kPoints][kNodes][kBlocks];  // the blocks of each point and node
     for (int a = 0; a < kNodes; ++a)
@@ -110,11 +129,10 @@ struct CompensatedSums {
     }
   }
 
-  template <int kNodes, class T>
-  KOKKOS_INLINE_FUNCTION void addRows(const PointShapesAt<T>& at,
-                                      const T (&row)[kNodes][kNodeSumRow], int first_block,
-                                      int end_block, bool wet) const {
-    for (int l = 0; l < PointShapesAt<T>::kCount; ++l)
+  template <int kNodes, class At, class T>
+  KOKKOS_INLINE_FUNCTION void addRows(const At& at, const T (&row)[kNodes][kNodeSumRow],
+                                      int first_block, int end_block, bool wet) const {
+    for (int l = 0; l < At::kCount; ++l)
       for (int a = 0; a < kNodes; ++a)
         for (int slot = first_block * kLanes; slot < end_block * kLanes; ++slot)
           if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot)))
@@ -171,9 +189,10 @@ struct P2GPointViews {
 /// What point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located and all `wet` or
 /// all dry, add to their nodes (4.40-4.47): one row of NodeSumSlot values per node, computed
 /// for all lanes at once and added by `sums` (PackedSums, CompensatedSums) in point order.
-template <int kNodes, class T, class Sums>
-KOKKOS_INLINE_FUNCTION void mapPointToGrid(const PointShapesAt<T>& at, bool wet, Real gravity,
+template <int kNodes, class At, class Sums>
+KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
                                            const P2GPointViews& v, const Sums& sums, int p) {
+  using T = typename At::Value;
   const T volume = load<T>(v.volume_p, p);
   const T m_solid = load<T>(v.mass_solid_p, p);
   const T m_liquid = wet ? load<T>(v.mass_liquid_p, p) : splat<T>(0);
@@ -223,8 +242,7 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const PointShapesAt<T>& at, bool wet,
 
 /// Whether the kLanes points from `first` (of `count`) can be mapped as Lanes: all located
 /// and all wet or all dry (`wet` is set to that); `one_element`: all in one element.
-KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<PointShape*, MemSpace>& shape_p,
-                                             const Kokkos::View<int*, MemSpace>& element_p,
+KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<int*, MemSpace>& element_p,
                                              const Kokkos::View<int*, MemSpace>& material_p,
                                              const LiquidCarrying& liquid_m, int first, int count,
                                              bool& wet, bool& one_element) {
@@ -232,7 +250,7 @@ KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<PointShape*, Mem
   wet = liquid_m(material_p(first)) != 0;
   one_element = true;
   for (int p = first; p < first + kLanes; ++p) {
-    if (shape_p(p).node[0] < 0 || (liquid_m(material_p(p)) != 0) != wet) return false;
+    if (element_p(p) < 0 || (liquid_m(material_p(p)) != 0) != wet) return false;
     one_element = one_element && element_p(p) == element_p(first);
   }
   return true;
@@ -248,19 +266,21 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
                         points.pressure_liquid, points.stress_effective, points.velocity_solid,
                         points.velocity_liquid};
   const auto element_p = points.element;
+  const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   const int count = points.count;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
-    if (lanesMapTogether(v.shape_p, element_p, v.material_p, liquid_m, first, count, wet,
-                         one_element)) {
-      mapPointToGrid<kNodes>(PointShapesAt<Lanes>(v.shape_p, first, one_element), wet, gravity, v,
-                             sums, first);
+    if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
+      withLaneShapes<kNodes>(
+          shapes, affine_maps, local_p, element_p(first), first, one_element,
+          [&](const auto& at) { mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first); });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
-      if (v.shape_p(p).node[0] < 0) continue;
+      if (element_p(p) < 0) continue;
       mapPointToGrid<kNodes>(PointShapesAt<Real>(v.shape_p, p), liquid_m(v.material_p(p)) != 0,
                              gravity, v, sums, p);
     }
@@ -279,13 +299,13 @@ struct G2PPointViews {
 /// and all `wet` or all dry, from the nodal values of readVelocityUpdateValues, and their
 /// momenta added to the nodes (the remap; slots 4-7, one block). The kinetic energies and
 /// the count of non-finite velocities are summed in point order.
-template <int kNodes, class T, class Values, class Sums>
-KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const PointShapesAt<T>& at, bool wet, Real dt,
-                                                  Real pic_solid, Real pic_liquid,
-                                                  const Values& values_i, const G2PPointViews& v,
-                                                  const Sums& sums, int p, Real& ks, Real& kl,
-                                                  int& bad) {
-  constexpr int kPoints = PointShapesAt<T>::kCount;
+template <int kNodes, class At, class Values, class Sums>
+KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real dt, Real pic_solid,
+                                                  Real pic_liquid, const Values& values_i,
+                                                  const G2PPointViews& v, const Sums& sums, int p,
+                                                  Real& ks, Real& kl, int& bad) {
+  using T = typename At::Value;
+  constexpr int kPoints = At::kCount;
   // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
   // interpolation a loop of its own: the conditions are tested once per point, not per node.
   T as[kDim] = {}, al[kDim] = {}, vs_grid[kDim] = {}, vl[kDim] = {};
@@ -361,6 +381,8 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
+  const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   const G2PPointViews v{points.volume,         points.mass_solid,     points.mass_liquid,
                         points.density_liquid, points.velocity_solid, points.velocity_liquid};
   readVelocityUpdateValues(active, grid, records);
@@ -371,14 +393,16 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real& ks, Real& kl, int& bad) {
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
-    if (lanesMapTogether(shape_p, element_p, material_p, liquid_m, first, count, wet,
-                         one_element)) {
-      updatePointVelocityAt<kNodes>(PointShapesAt<Lanes>(shape_p, first, one_element), wet, dt,
-                                    pic_solid, pic_liquid, values_i, v, sums, first, ks, kl, bad);
+    if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
+      withLaneShapes<kNodes>(shapes, affine_maps, local_p, element_p(first), first, one_element,
+                             [&](const auto& at) {
+                               updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid,
+                                                             values_i, v, sums, first, ks, kl, bad);
+                             });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
-      if (shape_p(p).node[0] < 0) continue;
+      if (element_p(p) < 0) continue;
       updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shape_p, p), liquid_m(material_p(p)) != 0,
                                     dt, pic_solid, pic_liquid, values_i, v, sums, p, ks, kl, bad);
     }
@@ -390,10 +414,11 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
 /// The strain, spin, displacement and liquid-divergence increments of point p (T = Real) or
 /// of points p .. p + kLanes - 1 (Lanes), all located and all `wet` or all dry, from the
 /// nodal values of readStrainValues (interpolateVelocityGradients).
-template <int kNodes, class T, class Values>
-KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const PointShapesAt<T>& at, bool wet, Real dt,
+template <int kNodes, class At, class Values>
+KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
                                                const Values& values_i, const PointRates& rates,
                                                int p) {
+  using T = typename At::Value;
   T L[kDim][kDim] = {};  // L_jk = d v_S,j / d x_k
   T v[kDim] = {};
   for (int a = 0; a < kNodes; ++a) {
@@ -464,6 +489,8 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
+  const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   records.allocate(grid.numNodes());
   readStrainValues(active, grid, records);
   const auto values_i = records.values_i;
@@ -477,16 +504,17 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         const bool wet = end > first && liquid_m(material_p(first)) != 0;
         bool lanes = end - first == kLanes, one_element = true;
         for (int p = first; p < end && lanes; ++p) {
-          lanes = shape_p(p).node[0] >= 0 && (liquid_m(material_p(p)) != 0) == wet;
+          lanes = element_p(p) >= 0 && (liquid_m(material_p(p)) != 0) == wet;
           one_element = one_element && element_p(p) == element_p(first);
         }
         if (lanes) {
-          strainIncrementsAt<kNodes>(PointShapesAt<Lanes>(shape_p, first, one_element), wet, dt,
-                                     values_i, r, first);
+          withLaneShapes<kNodes>(
+              shapes, affine_maps, local_p, element_p(first), first, one_element,
+              [&](const auto& at) { strainIncrementsAt<kNodes>(at, wet, dt, values_i, r, first); });
           return;
         }
         for (int p = first; p < end; ++p) {
-          if (shape_p(p).node[0] < 0)
+          if (element_p(p) < 0)
             clearStrainIncrements(r, p);
           else
             strainIncrementsAt<kNodes>(PointShapesAt<Real>(shape_p, p),

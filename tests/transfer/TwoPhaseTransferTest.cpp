@@ -1,6 +1,8 @@
 // [2Phase][Transfer] P2G conservation, G2P reproduction of linear fields, internal forces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -8,8 +10,10 @@
 
 #include "TestScenes.hpp"
 #include "argine/core/Lanes.hpp"
+#include "argine/mesh/PointLocator.hpp"
 #include "argine/points/PointFields.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/AffineElementMaps.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
@@ -452,6 +456,63 @@ MaterialPoints rearranged(const MaterialPoints& points, const std::vector<int>& 
   return out;
 }
 
+/// The results of the three transfer kernels on one set of points.
+struct TransferRun {
+  MaterialPoints points;
+  PointShapes shapes;
+  GridFields grid, lo;
+  PointRates rates;
+};
+
+/// The P2G, the velocity update with its remap and the strain increments on r.points with
+/// r.shapes (the grid's velocities and accelerations in between as a solve would leave them,
+/// randomiseGrid), with compensated sums or the packed ones.
+void runTransfers(const Mesh& mesh, TransferRun& r, bool compensated) {
+  r.grid.allocate(mesh.numNodes());
+  r.lo.allocate(mesh.numNodes());
+  const ActiveNodes active = activeNodesOf(mesh, r.points);
+  NodeRecords records;
+  const GridFields* compensation = compensated ? &r.lo : nullptr;
+  mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, active, records, r.grid, compensation);
+  randomiseGrid(r.grid, mesh.numNodes(), 5);
+  updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3, {0.25, 0.5}, r.points,
+                                     records, r.grid, compensation);
+  interpolateVelocityGradients(r.points, r.shapes, liquidFlags(), active, r.grid, records, 1e-3,
+                               r.rates);
+}
+
+/// Expects the nodal sums of a and b, and the results of a's point p and b's point
+/// in_b[p], to be the same bits.
+void expectSameBits(const TransferRun& a, const TransferRun& b, int nodes,
+                    const std::vector<int>& in_b) {
+  for (auto field :
+       {&GridFields::mass_solid_i, &GridFields::mass_liquid_i, &GridFields::mass_liquid_intrinsic_i,
+        &GridFields::drag_i, &GridFields::volume_liquid_i}) {
+    const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
+    for (int i = 0; i < nodes; ++i) EXPECT_EQ(x(i), y(i)) << i;
+  }
+  for (auto field : {&GridFields::momentum_solid_i, &GridFields::momentum_liquid_i,
+                     &GridFields::force_mixture_i, &GridFields::force_liquid_i}) {
+    const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
+    for (int i = 0; i < nodes; ++i)
+      for (int d = 0; d < kDim; ++d) EXPECT_EQ(x(i, d), y(i, d)) << i << " " << d;
+  }
+  for (int p = 0; p < a.points.count; ++p) {
+    const int r = in_b[p];
+    for (int d = 0; d < kDim; ++d) {
+      EXPECT_EQ(a.points.velocity_solid(p, d), b.points.velocity_solid(r, d)) << p;
+      EXPECT_EQ(a.points.velocity_liquid(p, d), b.points.velocity_liquid(r, d)) << p;
+      EXPECT_EQ(a.rates.displacement_increment_p(p, d), b.rates.displacement_increment_p(r, d));
+    }
+    for (int c = 0; c < kStressComponents; ++c)
+      EXPECT_EQ(a.rates.strain_increment_p(p, c), b.rates.strain_increment_p(r, c)) << p;
+    EXPECT_EQ(a.rates.spin_increment_p(p), b.rates.spin_increment_p(r)) << p;
+    EXPECT_EQ(a.rates.liquid_divergence_increment_p(p), b.rates.liquid_divergence_increment_p(r));
+    EXPECT_EQ(a.rates.content_flux_divergence_increment_p(p),
+              b.rates.content_flux_divergence_increment_p(r));
+  }
+}
+
 TEST_P(TransferOnShape, LanesGiveTheOnePointResultsBitForBit) {
   // The kernels take kLanes points at once where they can (all located, all wet or all dry)
   // and one at a time otherwise; both must give the same bits. Run A: every fourth point
@@ -461,67 +522,77 @@ TEST_P(TransferOnShape, LanesGiveTheOnePointResultsBitForBit) {
   const Mesh& mesh = scene.mesh;
   MaterialPoints& points = scene.points;
   for (int p = 0; p < points.count; ++p) points.material(p) = (p / kLanes) % 3 == 2 ? 1 : 0;
-  std::vector<int> same(points.count), spread;
+  std::vector<int> same(points.count), spread, in_spread;
   for (int p = 0; p < points.count; ++p) {
     same[p] = p;
+    in_spread.push_back(static_cast<int>(spread.size()));
     spread.push_back(p);
     if (p % 3 == 2) spread.push_back(-1);
   }
-  struct Run {
-    MaterialPoints points;
-    PointShapes shapes;
-    GridFields grid, lo;
-    PointRates rates;
-  };
   auto run = [&](const std::vector<int>& from, bool compensated) {
-    Run r;
+    TransferRun r;
     r.points = rearranged(points, from);
     evaluatePointShapes(mesh, r.points, r.shapes);
-    r.grid.allocate(mesh.numNodes());
-    r.lo.allocate(mesh.numNodes());
-    const ActiveNodes active = activeNodesOf(mesh, r.points);
-    NodeRecords records;
-    const GridFields* compensation = compensated ? &r.lo : nullptr;
-    mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, active, records, r.grid, compensation);
-    randomiseGrid(r.grid, mesh.numNodes(), 5);  // velocities and accelerations of a solve
-    updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3, {0.25, 0.5}, r.points,
-                                       records, r.grid, compensation);
-    interpolateVelocityGradients(r.points, r.shapes, liquidFlags(), active, r.grid, records, 1e-3,
-                                 r.rates);
+    runTransfers(mesh, r, compensated);
     return r;
   };
   for (const bool compensated : {false, true}) {
-    const Run a = run(same, compensated), b = run(spread, compensated);
-    for (auto field : {&GridFields::mass_solid_i, &GridFields::mass_liquid_i,
-                       &GridFields::mass_liquid_intrinsic_i, &GridFields::drag_i,
-                       &GridFields::volume_liquid_i}) {
-      const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
-      for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(x(i), y(i)) << i;
-    }
-    for (auto field : {&GridFields::momentum_solid_i, &GridFields::momentum_liquid_i,
-                       &GridFields::force_mixture_i, &GridFields::force_liquid_i}) {
-      const auto x = hostCopy(a.grid.*field), y = hostCopy(b.grid.*field);
-      for (int i = 0; i < mesh.numNodes(); ++i)
-        for (int d = 0; d < kDim; ++d) EXPECT_EQ(x(i, d), y(i, d)) << i << " " << d;
-    }
-    int r = 0;  // point p of run A is point r of run B
-    for (int p = 0; p < points.count; ++p, ++r) {
-      while (spread[r] != p) ++r;
-      for (int d = 0; d < kDim; ++d) {
-        EXPECT_EQ(a.points.velocity_solid(p, d), b.points.velocity_solid(r, d)) << p;
-        EXPECT_EQ(a.points.velocity_liquid(p, d), b.points.velocity_liquid(r, d)) << p;
-        EXPECT_EQ(a.rates.displacement_increment_p(p, d), b.rates.displacement_increment_p(r, d));
-      }
-      for (int c = 0; c < kStressComponents; ++c)
-        EXPECT_EQ(a.rates.strain_increment_p(p, c), b.rates.strain_increment_p(r, c)) << p;
-      EXPECT_EQ(a.rates.spin_increment_p(p), b.rates.spin_increment_p(r)) << p;
-      EXPECT_EQ(a.rates.liquid_divergence_increment_p(p), b.rates.liquid_divergence_increment_p(r));
-      EXPECT_EQ(a.rates.content_flux_divergence_increment_p(p),
-                b.rates.content_flux_divergence_increment_p(r));
-    }
+    const TransferRun a = run(same, compensated), b = run(spread, compensated);
+    expectSameBits(a, b, mesh.numNodes(), in_spread);
     // Something happened: the velocities changed, but not a dry point's liquid one.
     EXPECT_NE(a.points.velocity_solid(0, 0), points.velocity_solid(0, 0));
     EXPECT_EQ(a.points.velocity_liquid(2 * kLanes, 0), points.velocity_liquid(2 * kLanes, 0));
+  }
+}
+
+TEST_P(TransferOnShape, ShapesComputedInAffineElementsGiveTheRecordBitsAndNoRecordIsRead) {
+  // Where kLanes points lie in one affine element and the shapes come from the relocation
+  // with AffineElementMaps, the kernels compute N and dN/dx from the points' local
+  // coordinates and the element's J^-1 (AffineShapesAt) instead of reading the records,
+  // which the relocation wrote with the same formulas: the bits must be the same. Run A: the
+  // maps, with every record's weights NaN, so that reading one shows; run B: the same
+  // records, clean, read (no maps). Every chunk of kLanes points lies in one element: the
+  // Quad4 points as seeded (four an element), the Tri3 ones with an element's last repeated.
+  auto scene = randomScene(5, 4, 2.5, 2.0, GetParam(), 29);
+  const Mesh& mesh = scene.mesh;
+  const int per = mesh.type == ElementType::Quad4 ? 4 : 3;
+  std::vector<int> from, same;
+  for (int e = 0; e < mesh.numElements(); ++e)
+    for (int k = 0; k < kLanes; ++k) {
+      same.push_back(static_cast<int>(from.size()));
+      from.push_back(e * per + std::min(k, per - 1));
+    }
+  const PointLocator locator(mesh);
+  const AffineElementMaps maps(mesh);
+  auto run = [&](bool computed, bool compensated) {
+    TransferRun r;
+    r.points = rearranged(scene.points, from);
+    for (int p = 0; p < r.points.count; ++p) r.points.material(p) = (p / kLanes) % 3 == 2;
+    const RelocationCounts found =
+        relocateAndEvaluateShapes(mesh, locator, maps, r.points, r.shapes);
+    EXPECT_EQ(found.lost, 0);
+    EXPECT_TRUE(r.shapes.fromAffineMaps());
+    for (int p = 0; p < r.points.count; ++p)
+      EXPECT_EQ(r.points.element(p), r.points.element(p - p % kLanes)) << p;
+    if (computed) {
+      for (int p = 0; p < r.points.count; ++p)
+        for (int a = 0; a < kMaxElementNodes; ++a) {
+          PointShape& shape = r.shapes.shape_p(p);
+          shape.value[a] = shape.gradient[a][0] = shape.gradient[a][1] = std::nan("");
+        }
+    } else {
+      r.shapes.affine_e = {};
+      r.shapes.inverse_jacobian_e = {};
+      r.shapes.connectivity = {};
+    }
+    runTransfers(mesh, r, compensated);
+    return r;
+  };
+  for (const bool compensated : {false, true}) {
+    const TransferRun a = run(true, compensated), b = run(false, compensated);
+    expectSameBits(a, b, mesh.numNodes(), same);
+    EXPECT_TRUE(std::isfinite(a.rates.strain_increment_p(0, XX)));
+    EXPECT_NE(a.rates.strain_increment_p(0, XX), 0.0);
   }
 }
 

@@ -7,6 +7,7 @@
 /// called inside kernels. Element node coordinates are passed as X[a][i] (node a, axis i),
 /// nodes counter-clockwise.
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/mesh/Mesh.hpp"
 
@@ -20,22 +21,23 @@ struct Tri3 {
   static constexpr bool kAffine = true;                    ///< constant Jacobian
   static constexpr ElementType kType = ElementType::Tri3;  ///< runtime tag
 
-  /// Shape function values N[a] at xi.
-  static KOKKOS_INLINE_FUNCTION void values(const Real xi[kDim], Real N[kNodes]) {
+  /// Shape function values N[a] at xi, of one point (T = Real) or of kLanes (T = Lanes).
+  template <class T>
+  static KOKKOS_INLINE_FUNCTION void values(const T xi[kDim], T N[kNodes]) {
     N[0] = 1.0 - xi[0] - xi[1];
     N[1] = xi[0];
     N[2] = xi[1];
   }
 
   /// Local gradients dN[a][j] = dN_a / dxi_j (constant for Tri3).
-  static KOKKOS_INLINE_FUNCTION void localGradients(const Real /*xi*/[kDim],
-                                                    Real dN[kNodes][kDim]) {
-    dN[0][0] = -1.0;
-    dN[0][1] = -1.0;
-    dN[1][0] = 1.0;
-    dN[1][1] = 0.0;
-    dN[2][0] = 0.0;
-    dN[2][1] = 1.0;
+  template <class T>
+  static KOKKOS_INLINE_FUNCTION void localGradients(const T /*xi*/[kDim], T dN[kNodes][kDim]) {
+    dN[0][0] = splat<T>(-1.0);
+    dN[0][1] = splat<T>(-1.0);
+    dN[1][0] = splat<T>(1.0);
+    dN[1][1] = splat<T>(0.0);
+    dN[2][0] = splat<T>(0.0);
+    dN[2][1] = splat<T>(1.0);
   }
 
   /// Smallest signed distance (in local coordinates) from xi to the reference boundary:
@@ -79,10 +81,11 @@ struct Quad4 {
     xi[1] = (a >= 2) ? 1.0 : -1.0;
   }
 
-  /// Shape function values N[a] at xi.
-  static KOKKOS_INLINE_FUNCTION void values(const Real xi[kDim], Real N[kNodes]) {
-    const Real xm = 1.0 - xi[0], xp = 1.0 + xi[0];
-    const Real ym = 1.0 - xi[1], yp = 1.0 + xi[1];
+  /// Shape function values N[a] at xi, of one point (T = Real) or of kLanes (T = Lanes).
+  template <class T>
+  static KOKKOS_INLINE_FUNCTION void values(const T xi[kDim], T N[kNodes]) {
+    const T xm = 1.0 - xi[0], xp = 1.0 + xi[0];
+    const T ym = 1.0 - xi[1], yp = 1.0 + xi[1];
     N[0] = 0.25 * xm * ym;
     N[1] = 0.25 * xp * ym;
     N[2] = 0.25 * xp * yp;
@@ -90,9 +93,10 @@ struct Quad4 {
   }
 
   /// Local gradients dN[a][j] = dN_a / dxi_j.
-  static KOKKOS_INLINE_FUNCTION void localGradients(const Real xi[kDim], Real dN[kNodes][kDim]) {
-    const Real xm = 1.0 - xi[0], xp = 1.0 + xi[0];
-    const Real ym = 1.0 - xi[1], yp = 1.0 + xi[1];
+  template <class T>
+  static KOKKOS_INLINE_FUNCTION void localGradients(const T xi[kDim], T dN[kNodes][kDim]) {
+    const T xm = 1.0 - xi[0], xp = 1.0 + xi[0];
+    const T ym = 1.0 - xi[1], yp = 1.0 + xi[1];
     dN[0][0] = -0.25 * ym;
     dN[0][1] = -0.25 * xm;
     dN[1][0] = 0.25 * ym;
