@@ -9,7 +9,19 @@
 namespace argine {
 
 void PointShapes::allocate(int n) {
-  shape_p = View<PointShape*>("shape_p", n);
+  stored_p = View<PointShape*>("stored_p", n);
+}
+
+Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
+                                                    const MaterialPoints& points) {
+  Kokkos::View<PointShape*, MemSpace> out("every_point_shape", points.count);
+  const PointShapes s = shapes;
+  const auto element_p = points.element;
+  const auto local_p = points.local;
+  Kokkos::parallel_for(
+      "every_point_shape", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) { out(p) = s.of(p, element_p, local_p); });
+  return out;
 }
 
 namespace {
@@ -21,7 +33,7 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
   const auto connectivity = mesh.connectivity;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const auto shape_p = shapes.shape_p;
+  const auto shape_p = shapes.stored_p;
   Kokkos::parallel_for(
       "evaluate_point_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -91,7 +103,7 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto position_p = points.position;
-  const auto shape_p = shapes.shape_p;
+  const auto shape_p = shapes.stored_p;
   const auto inverse_e = maps.inverse_jacobian_e;
   const auto origin_e = maps.origin_e;
   const auto affine_e = maps.affine_e;
@@ -150,19 +162,14 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
         }
         local_p(p, 0) = xi[0];
         local_p(p, 1) = xi[1];
+        // In an affine element the shapes are computed where they are read (PointShapes::of,
+        // from xi and J^-1): no record to write.
+        if (with_maps && affine_e(e)) return;
         Real N[kNodes];
         Real dNdx[kNodes][kDim];
         Shape::values(xi, N);
-        if (with_maps && affine_e(e)) {  // dN/dx = dN/dxi J^-1, J constant
-          Real dN[kNodes][kDim];
-          Shape::localGradients(xi, dN);
-          for (int a = 0; a < kNodes; ++a)
-            for (int i = 0; i < kDim; ++i)
-              dNdx[a][i] = dN[a][0] * inverse_e(e, i) + dN[a][1] * inverse_e(e, 2 + i);
-        } else {
-          if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
-          physicalGradients<Shape>(X, xi, dNdx);
-        }
+        if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+        physicalGradients<Shape>(X, xi, dNdx);
         for (int a = 0; a < kNodes; ++a) {
           shape.node[a] = connectivity(e, a);
           shape.value[a] = N[a];
