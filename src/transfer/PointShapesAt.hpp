@@ -86,11 +86,7 @@ struct AffineShapesAt {
   template <class LocalView>
   KOKKOS_INLINE_FUNCTION AffineShapesAt(const PointShapes& shapes, const LocalView& local_p, int p,
                                         int e) {
-    Lanes xi[kDim];
-    for (int l = 0; l < kLanes; ++l) {
-      xi[0][l] = local_p(p + l, 0);
-      xi[1][l] = local_p(p + l, 1);
-    }
+    const Lanes xi[kDim] = {load<Lanes>(local_p, p, 0), load<Lanes>(local_p, p, 1)};
     const Real inverse[4] = {shapes.inverse_jacobian_e(e, 0), shapes.inverse_jacobian_e(e, 1),
                              shapes.inverse_jacobian_e(e, 2), shapes.inverse_jacobian_e(e, 3)};
     affineShapes<Shape>(xi, inverse, N, dNdx);

@@ -71,5 +71,24 @@ TEST(Lanes, LoadAndStoreReachConsecutivePoints) {
   EXPECT_EQ(scalar(1), 1.0);
 }
 
+TEST(Lanes, LoadOfPairsAndQuadruplesGivesTheComponentOfEachPoint) {
+  // (point, 2) and (point, 4) Views are read with vector loads and shuffles (Lanes.hpp):
+  // each lane must still be its point's component.
+  Kokkos::View<Real* [2], MemSpace> pair("pair", 7);
+  Kokkos::View<Real* [4], MemSpace> quad("quad", 7);
+  for (int p = 0; p < 7; ++p) {
+    for (int c = 0; c < 2; ++c) pair(p, c) = 10 * p + c;
+    for (int c = 0; c < 4; ++c) quad(p, c) = 100 * p + c;
+  }
+  for (int first : {0, 3})
+    for (int c = 0; c < 4; ++c) {
+      const Lanes q = load<Lanes>(quad, first, c);
+      for (int l = 0; l < kLanes; ++l) EXPECT_EQ(q[l], 100 * (first + l) + c) << c << " " << l;
+      if (c >= 2) continue;
+      const Lanes v = load<Lanes>(pair, first, c);
+      for (int l = 0; l < kLanes; ++l) EXPECT_EQ(v[l], 10 * (first + l) + c) << c << " " << l;
+    }
+}
+
 }  // namespace
 }  // namespace argine
