@@ -72,8 +72,8 @@ TEST(Lanes, LoadAndStoreReachConsecutivePoints) {
 }
 
 TEST(Lanes, LoadOfPairsAndQuadruplesGivesTheComponentOfEachPoint) {
-  // (point, 2) and (point, 4) Views are read with vector loads and shuffles (Lanes.hpp):
-  // each lane must still be its point's component.
+  // (point, 2) Views are read with two vector loads and a shuffle, others lane by lane
+  // (Lanes.hpp): each lane must be its point's component either way.
   Kokkos::View<Real* [2], MemSpace> pair("pair", 7);
   Kokkos::View<Real* [4], MemSpace> quad("quad", 7);
   for (int p = 0; p < 7; ++p) {

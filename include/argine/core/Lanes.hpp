@@ -116,13 +116,6 @@ KOKKOS_INLINE_FUNCTION T load(const View& view, int p, int c) {
     std::memcpy(&high, &view(p + 2, 0), sizeof high);
     return c == 0 ? __builtin_shufflevector(low, high, 0, 2, 4, 6)
                   : __builtin_shufflevector(low, high, 1, 3, 5, 7);
-  } else if constexpr (std::is_same_v<typename View::array_layout, Kokkos::LayoutRight> &&
-                       View::static_extent(1) == kLanes) {
-    // Four components (a stress): four vector loads and a transpose.
-    Lanes rows[kLanes], columns[kLanes];
-    for (int l = 0; l < kLanes; ++l) std::memcpy(&rows[l], &view(p + l, 0), sizeof(Lanes));
-    transposeLanes(rows, columns);
-    return columns[c];
   } else {
     T out;
     for (int l = 0; l < kLanes; ++l) out[l] = view(p + l, c);
