@@ -9,19 +9,7 @@
 namespace argine {
 
 void PointShapes::allocate(int n) {
-  stored_p = View<PointShape*>("stored_p", n);
-}
-
-Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
-                                                    const MaterialPoints& points) {
-  Kokkos::View<PointShape*, MemSpace> out("every_point_shape", points.count);
-  const PointShapes s = shapes;
-  const auto element_p = points.element;
-  const auto local_p = points.local;
-  Kokkos::parallel_for(
-      "every_point_shape", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p) { out(p) = s.of(p, element_p, local_p); });
-  return out;
+  shape_p = View<PointShape*>("shape_p", n);
 }
 
 namespace {
@@ -33,7 +21,7 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
   const auto connectivity = mesh.connectivity;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const auto shape_p = shapes.stored_p;
+  const auto shape_p = shapes.shape_p;
   Kokkos::parallel_for(
       "evaluate_point_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -103,7 +91,7 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto position_p = points.position;
-  const auto shape_p = shapes.stored_p;
+  const auto shape_p = shapes.shape_p;
   const auto inverse_e = maps.inverse_jacobian_e;
   const auto origin_e = maps.origin_e;
   const auto affine_e = maps.affine_e;
@@ -162,14 +150,17 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
         }
         local_p(p, 0) = xi[0];
         local_p(p, 1) = xi[1];
-        // In an affine element the shapes are computed where they are read (PointShapes::of,
-        // from xi and J^-1): no record to write.
-        if (with_maps && affine_e(e)) return;
         Real N[kNodes];
         Real dNdx[kNodes][kDim];
-        Shape::values(xi, N);
-        if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
-        physicalGradients<Shape>(X, xi, dNdx);
+        if (with_maps && affine_e(e)) {  // dN/dx = dN/dxi J^-1, J constant
+          const Real inverse[4] = {inverse_e(e, 0), inverse_e(e, 1), inverse_e(e, 2),
+                                   inverse_e(e, 3)};
+          affineShapes<Shape>(xi, inverse, N, dNdx);
+        } else {
+          Shape::values(xi, N);
+          if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+          physicalGradients<Shape>(X, xi, dNdx);
+        }
         for (int a = 0; a < kNodes; ++a) {
           shape.node[a] = connectivity(e, a);
           shape.value[a] = N[a];

@@ -19,13 +19,10 @@ template <>
 struct PointShapesAt<Real> {
   using Value = Real;
   static constexpr int kCount = 1;  ///< points
-  PointShape shape;
+  const PointShape& shape;
 
-  /// Point p, located.
-  template <class ElementView, class LocalView>
-  KOKKOS_INLINE_FUNCTION PointShapesAt(const PointShapes& shapes, const ElementView& element_p,
-                                       const LocalView& local_p, int p)
-      : shape(shapes.of(p, element_p, local_p)) {}
+  KOKKOS_INLINE_FUNCTION PointShapesAt(const Kokkos::View<PointShape*, MemSpace>& shape_p, int p)
+      : shape(shape_p(p)) {}
   KOKKOS_INLINE_FUNCTION int node(int a, int /*lane*/ = 0) const { return shape.node[a]; }
   KOKKOS_INLINE_FUNCTION Real value(int a) const { return shape.value[a]; }
   KOKKOS_INLINE_FUNCTION Real gradient(int a, int d) const { return shape.gradient[a][d]; }
@@ -36,44 +33,43 @@ struct PointShapesAt<Real> {
   }
 };
 
-/// kLanes points in more than one element (or not computed, PointShapes::of), lane by lane.
 template <>
 struct PointShapesAt<Lanes> {
   using Value = Lanes;
   static constexpr int kCount = kLanes;
-  PointShape shape[kLanes];
+  const PointShape* shape[kLanes];
   bool one_element;  ///< all lanes have the same nodes
 
   /// The points p .. p + kLanes - 1, all located; `one_element`: all in one element.
-  template <class ElementView, class LocalView>
-  KOKKOS_INLINE_FUNCTION PointShapesAt(const PointShapes& shapes, const ElementView& element_p,
-                                       const LocalView& local_p, int p, bool same_element)
+  KOKKOS_INLINE_FUNCTION PointShapesAt(const Kokkos::View<PointShape*, MemSpace>& shape_p, int p,
+                                       bool same_element)
       : one_element(same_element) {
-    for (int l = 0; l < kLanes; ++l) shape[l] = shapes.of(p + l, element_p, local_p);
+    for (int l = 0; l < kLanes; ++l) shape[l] = &shape_p(p + l);
   }
-  KOKKOS_INLINE_FUNCTION int node(int a, int lane) const { return shape[lane].node[a]; }
+  KOKKOS_INLINE_FUNCTION int node(int a, int lane) const { return shape[lane]->node[a]; }
   KOKKOS_INLINE_FUNCTION Lanes value(int a) const {
     Lanes out;
-    for (int l = 0; l < kLanes; ++l) out[l] = shape[l].value[a];
+    for (int l = 0; l < kLanes; ++l) out[l] = shape[l]->value[a];
     return out;
   }
   KOKKOS_INLINE_FUNCTION Lanes gradient(int a, int d) const {
     Lanes out;
-    for (int l = 0; l < kLanes; ++l) out[l] = shape[l].gradient[a][d];
+    for (int l = 0; l < kLanes; ++l) out[l] = shape[l]->gradient[a][d];
     return out;
   }
   template <class Values>
   KOKKOS_INLINE_FUNCTION Lanes nodal(const Values& values_i, int a, int slot) const {
-    if (one_element) return splat<Lanes>(values_i(shape[0].node[a], slot));
+    if (one_element) return splat<Lanes>(values_i(shape[0]->node[a], slot));
     Lanes out;
-    for (int l = 0; l < kLanes; ++l) out[l] = values_i(shape[l].node[a], slot);
+    for (int l = 0; l < kLanes; ++l) out[l] = values_i(shape[l]->node[a], slot);
     return out;
   }
 };
 
-/// The same for kLanes points in one element whose shapes are computed
-/// (PointShapes::computedIn): from their local coordinates and the element's J^-1, all lanes
-/// at once (affineShapes, the formula of PointShapes::of per lane: the same bits).
+/// The same as PointShapesAt<Lanes> for kLanes points in one affine element, computed from
+/// their local coordinates and the element's J^-1 (PointShapes::fromAffineMaps) instead of
+/// read from their records: 16 bytes a point instead of 112, the same bits (the formulas of
+/// the relocation, ShapeFunctions.hpp, per lane).
 template <class Shape>
 struct AffineShapesAt {
   using Value = Lanes;
@@ -82,7 +78,7 @@ struct AffineShapesAt {
   Lanes N[Shape::kNodes];
   Lanes dNdx[Shape::kNodes][kDim];
 
-  /// The points p .. p + kLanes - 1, all in element e.
+  /// The points p .. p + kLanes - 1, all in element e, which is affine.
   template <class LocalView>
   KOKKOS_INLINE_FUNCTION AffineShapesAt(const PointShapes& shapes, const LocalView& local_p, int p,
                                         int e) {

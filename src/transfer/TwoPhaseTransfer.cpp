@@ -33,19 +33,19 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
 template <int kNodes>
 using ShapeOf = std::conditional_t<kNodes == 3, Tri3, Quad4>;
 
-/// Calls f(at) with the shapes of the kLanes points from `first`, all located: all lanes at
-/// once (AffineShapesAt) when they lie in one element whose shapes are computed
-/// (PointShapes::computedIn), else lane by lane (PointShapesAt<Lanes>). The same bits.
-template <int kNodes, class ElementView, class LocalView, class F>
-KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, const ElementView& element_p,
-                                           const LocalView& local_p, int first, bool one_element,
-                                           const F& f) {
-  const int element = element_p(first);
-  if (one_element && shapes.computedIn(element)) {
+/// Calls f(at) with the shapes of the kLanes points from `first`, all located: computed from
+/// their local coordinates (AffineShapesAt) when they lie in one affine element and `shapes`
+/// allows it (fromAffineMaps), else read from their records (PointShapesAt<Lanes>). The same
+/// bits either way.
+template <int kNodes, class LocalView, class F>
+KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, bool affine_maps,
+                                           const LocalView& local_p, int element, int first,
+                                           bool one_element, const F& f) {
+  if (one_element && affine_maps && shapes.affine_e(element)) {
     f(AffineShapesAt<ShapeOf<kNodes>>(shapes, local_p, first, element));
     return;
   }
-  f(PointShapesAt<Lanes>(shapes, element_p, local_p, first, one_element));
+  f(PointShapesAt<Lanes>(shapes.shape_p, first, one_element));
 }
 
 /// Where a P2G kernel adds its points' contributions, as rows of slots (NodeSumSlot) per
@@ -178,6 +178,7 @@ KineticTotals scatterFromPoints(const char* name, int count, const Body& body,
 
 /// The nodal sums of the P2G (4.40-4.47), as point fields and their totals.
 struct P2GPointViews {
+  Kokkos::View<PointShape*, MemSpace> shape_p;
   Kokkos::View<int*, MemSpace> material_p;
   Kokkos::View<Real*, MemSpace> volume_p, mass_solid_p, mass_liquid_p, density_liquid_p, porosity_p,
       saturation_p, conductivity_p, pressure_p;
@@ -259,27 +260,29 @@ template <int kNodes>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
                          NodeRecords& records, GridFields& grid, const GridFields* compensation) {
-  const P2GPointViews v{points.material,         points.volume,         points.mass_solid,
-                        points.mass_liquid,      points.density_liquid, points.porosity,
-                        points.saturation,       points.conductivity,   points.pressure_liquid,
-                        points.stress_effective, points.velocity_solid, points.velocity_liquid};
+  const P2GPointViews v{shapes.shape_p,         points.material,         points.volume,
+                        points.mass_solid,      points.mass_liquid,      points.density_liquid,
+                        points.porosity,        points.saturation,       points.conductivity,
+                        points.pressure_liquid, points.stress_effective, points.velocity_solid,
+                        points.velocity_liquid};
   const auto element_p = points.element;
   const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   const int count = points.count;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
     if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-        mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first);
-      });
+      withLaneShapes<kNodes>(
+          shapes, affine_maps, local_p, element_p(first), first, one_element,
+          [&](const auto& at) { mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first); });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
       if (element_p(p) < 0) continue;
-      mapPointToGrid<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
-                             liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
+      mapPointToGrid<kNodes>(PointShapesAt<Real>(v.shape_p, p), liquid_m(v.material_p(p)) != 0,
+                             gravity, v, sums, p);
     }
   };
   scatterFromPoints("p2g_two_phase", (count + kLanes - 1) / kLanes, body, active, records, grid,
@@ -375,9 +378,11 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 VelocityBlend blend, MaterialPoints& points,
                                                 NodeRecords& records, GridFields& grid,
                                                 const GridFields* compensation) {
+  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   const G2PPointViews v{points.volume,         points.mass_solid,     points.mass_liquid,
                         points.density_liquid, points.velocity_solid, points.velocity_liquid};
   readVelocityUpdateValues(active, grid, records);
@@ -389,17 +394,17 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
     if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-        updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid, values_i, v, sums, first,
-                                      ks, kl, bad);
-      });
+      withLaneShapes<kNodes>(shapes, affine_maps, local_p, element_p(first), first, one_element,
+                             [&](const auto& at) {
+                               updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid,
+                                                             values_i, v, sums, first, ks, kl, bad);
+                             });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
       if (element_p(p) < 0) continue;
-      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
-                                    liquid_m(material_p(p)) != 0, dt, pic_solid, pic_liquid,
-                                    values_i, v, sums, p, ks, kl, bad);
+      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shape_p, p), liquid_m(material_p(p)) != 0,
+                                    dt, pic_solid, pic_liquid, values_i, v, sums, p, ks, kl, bad);
     }
   };
   return scatterFromPoints("g2p_velocities_p2g_momenta", (count + kLanes - 1) / kLanes, body,
@@ -481,9 +486,11 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
                                       const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                       const GridFields& grid, NodeRecords& records, Real dt,
                                       PointRates& rates) {
+  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
+  const bool affine_maps = shapes.fromAffineMaps();
   records.allocate(grid.numNodes());
   readStrainValues(active, grid, records);
   const auto values_i = records.values_i;
@@ -502,7 +509,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
         }
         if (lanes) {
           withLaneShapes<kNodes>(
-              shapes, element_p, local_p, first, one_element,
+              shapes, affine_maps, local_p, element_p(first), first, one_element,
               [&](const auto& at) { strainIncrementsAt<kNodes>(at, wet, dt, values_i, r, first); });
           return;
         }
@@ -510,7 +517,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
           if (element_p(p) < 0)
             clearStrainIncrements(r, p);
           else
-            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shape_p, p),
                                        liquid_m(material_p(p)) != 0, dt, values_i, r, p);
         }
       });

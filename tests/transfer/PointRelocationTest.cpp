@@ -76,8 +76,7 @@ TEST_P(RelocationOnShape, AgreesWithLocatingFromScratch) {
   EXPECT_GT(counts.changed_element, 0);                 // the moves cross element sides...
   EXPECT_LT(counts.changed_element, points.count / 2);  // ...but most stay
   const auto e = hostCopy(points.element), e_ref = hostCopy(fresh.element);
-  const auto a = hostCopy(everyPointShape(relocated, points)),
-             b = hostCopy(everyPointShape(reference, fresh));
+  const auto a = hostCopy(relocated.shape_p), b = hostCopy(reference.shape_p);
   const int per = GetParam() == ElementType::Quad4 ? 4 : 3;
   for (int p = 0; p < points.count; ++p) {
     ASSERT_EQ(e(p), e_ref(p)) << "point " << p;
@@ -120,8 +119,7 @@ TEST_P(RelocationOnShape, SameBitsWhicheverPathFindsTheElement) {
   const auto local_a = hostCopy(a.local);
   const auto local_b = hostCopy(b.local);
   element_b = hostCopy(b.element);
-  const auto sa = hostCopy(everyPointShape(shapes_a, a)),
-             sb = hostCopy(everyPointShape(shapes_b, b));
+  const auto sa = hostCopy(shapes_a.shape_p), sb = hostCopy(shapes_b.shape_p);
   for (int p = 0; p < a.count; ++p) {
     ASSERT_EQ(element_a(p), element_b(p)) << "point " << p;
     for (int d = 0; d < kDim; ++d) EXPECT_EQ(local_a(p, d), local_b(p, d)) << "point " << p;

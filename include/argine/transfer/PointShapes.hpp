@@ -28,7 +28,7 @@ struct PointShape {
 /// N and dN/dx at xi in an affine element with inverse Jacobian J^-1 (row-major: (0,0),
 /// (0,1), (1,0), (1,1)): dN_a/dx_i = dN_a/dxi_0 J^-1_0i + dN_a/dxi_1 J^-1_1i, J constant. For
 /// one point (T = Real) or kLanes (T = Lanes) in one element: the one formula of the
-/// relocation, PointShapes::of and the transfers' AffineShapesAt, so all give the same bits.
+/// relocation and the transfers' AffineShapesAt, so both give the same bits.
 template <class Shape, class T>
 KOKKOS_INLINE_FUNCTION void affineShapes(const T xi[kDim], const Real inverse[4],
                                          T N[Shape::kNodes], T dNdx[Shape::kNodes][kDim]) {
@@ -47,74 +47,26 @@ struct PointShapes {
   /// from one place at fixed offsets. Three Views (nodes, values, gradients) cost three
   /// memory streams and runtime row strides: ~10 % more instructions and time in P2G and
   /// G2P on Serial (verification/benchmark). A GPU port may want them split again.
-  /// Written for every point by evaluatePointShapes; by the relocation with
-  /// AffineElementMaps (fromAffineMaps) only for the points outside affine elements, whose
-  /// shapes are computed where they are read (16 bytes of local coordinates instead of 112,
-  /// the same bits). Read them through of(), which knows which.
-  View<PointShape*> stored_p;
+  View<PointShape*> shape_p;
   ElementType type = ElementType::Quad4;  ///< element shape the kernels dispatch on
 
   /// Set by relocateAndEvaluateShapes with AffineElementMaps, empty after the other
-  /// evaluations: the shapes of a located point p whose element e has affine_e(e) = 1 are
-  /// nodes connectivity(e, a) and affineShapes(xi_p, inverse_jacobian_e(e)), xi_p its local
-  /// coordinates.
+  /// evaluations: the record of a located point p whose element e = points.element(p) has
+  /// affine_e(e) = 1 is then exactly nodes connectivity(e, a), N = Shape::values(xi_p) and
+  /// dN/dx = Shape::localGradients(xi_p) J^-1 (inverse_jacobian_e(e)) with xi_p =
+  /// points.local(p), so a kernel may compute it from 16 bytes of the point instead of reading
+  /// 112 (transfer/PointShapesAt.hpp, AffineShapesAt), and get the same bits.
   Kokkos::View<const Real* [4], MemSpace> inverse_jacobian_e;
   Kokkos::View<const int*, MemSpace> affine_e;
   Kokkos::View<const int**, MemSpace> connectivity;
   /// Whether the views above are set.
-  KOKKOS_INLINE_FUNCTION bool fromAffineMaps() const { return affine_e.extent(0) > 0; }
-  /// Whether the shapes of a point in `element` (>= 0) are computed rather than stored.
-  KOKKOS_INLINE_FUNCTION bool computedIn(int element) const {
-    return fromAffineMaps() && affine_e(element) != 0;
-  }
-
-  /// The shapes of point p, located in element_p(p) at local coordinates local_p(p, .):
-  /// computed in an affine element (computedIn), else the stored record; node -1 and zero
-  /// weights for a point outside the mesh.
-  template <class ElementView, class LocalView>
-  KOKKOS_INLINE_FUNCTION PointShape of(int p, const ElementView& element_p,
-                                       const LocalView& local_p) const {
-    const int e = element_p(p);
-    if (e >= 0 && !computedIn(e)) return stored_p(p);
-    PointShape shape{};
-    if (e < 0) {
-      for (int a = 0; a < kMaxElementNodes; ++a) shape.node[a] = -1;
-      return shape;
-    }
-    const Real xi[kDim] = {local_p(p, 0), local_p(p, 1)};
-    const Real inverse[4] = {inverse_jacobian_e(e, 0), inverse_jacobian_e(e, 1),
-                             inverse_jacobian_e(e, 2), inverse_jacobian_e(e, 3)};
-    if (type == ElementType::Tri3)
-      computeIn<Tri3>(e, xi, inverse, shape);
-    else
-      computeIn<Quad4>(e, xi, inverse, shape);
-    return shape;
-  }
+  bool fromAffineMaps() const { return affine_e.extent(0) > 0; }
 
   /// Allocate for n points.
   void allocate(int n);
   /// Number of points allocated for.
-  int count() const { return static_cast<int>(stored_p.extent(0)); }
-
- private:
-  template <class Shape>
-  KOKKOS_INLINE_FUNCTION void computeIn(int e, const Real xi[kDim], const Real inverse[4],
-                                        PointShape& shape) const {
-    Real N[Shape::kNodes], dNdx[Shape::kNodes][kDim];
-    affineShapes<Shape>(xi, inverse, N, dNdx);
-    for (int a = 0; a < Shape::kNodes; ++a) {
-      shape.node[a] = connectivity(e, a);
-      shape.value[a] = N[a];
-      shape.gradient[a][0] = dNdx[a][0];
-      shape.gradient[a][1] = dNdx[a][1];
-    }
-  }
+  int count() const { return static_cast<int>(shape_p.extent(0)); }
 };
-
-/// Every point's shapes as PointShapes::of gives them (computed or stored), in one View: for
-/// tests and checks that compare records, not for the step.
-Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
-                                                    const MaterialPoints& points);
 
 /// Evaluate N and dN/dx at every point from its element and local coordinates (points with
 /// element < 0, lost from the mesh, get node -1 and zero weights). Reallocates `shapes` when
