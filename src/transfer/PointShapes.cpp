@@ -95,7 +95,7 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
   const auto inverse_e = maps.inverse_jacobian_e;
   const auto origin_e = maps.origin_e;
   const auto affine_e = maps.affine_e;
-  const bool with_maps = maps.count() == mesh.numElements() && mesh.numElements() > 0;
+  const bool with_maps = shapes.fromAffineMaps();  // set from `maps` by the caller
   RelocationCounts counts;
   Kokkos::parallel_reduce(
       "relocate_and_evaluate_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),

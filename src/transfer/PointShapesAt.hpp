@@ -67,7 +67,7 @@ struct PointShapesAt<Lanes> {
 };
 
 /// The same as PointShapesAt<Lanes> for kLanes points in one affine element, computed from
-/// their local coordinates and the element's J^-1 (PointShapes::fromAffineMaps) instead of
+/// their local coordinates and the element's J^-1 (PointShapes::computableIn) instead of
 /// read from their records: 16 bytes a point instead of 112, the same bits (affineShapes,
 /// the formula the relocation wrote the records with, per lane).
 template <class Shape>

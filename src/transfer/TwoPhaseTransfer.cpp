@@ -34,14 +34,15 @@ template <int kNodes>
 using ShapeOf = std::conditional_t<kNodes == 3, Tri3, Quad4>;
 
 /// Calls f(at) with the shapes of the kLanes points from `first`, all located: computed from
-/// their local coordinates (AffineShapesAt) when they lie in one affine element and `shapes`
-/// allows it (fromAffineMaps), else read from their records (PointShapesAt<Lanes>). The same
+/// their local coordinates (AffineShapesAt) when they lie in one element where `shapes`
+/// allows it (computableIn), else read from their records (PointShapesAt<Lanes>). The same
 /// bits either way.
-template <int kNodes, class LocalView, class F>
-KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, bool affine_maps,
-                                           const LocalView& local_p, int element, int first,
-                                           bool one_element, const F& f) {
-  if (one_element && affine_maps && shapes.affine_e(element)) {
+template <int kNodes, class ElementView, class LocalView, class F>
+KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, const ElementView& element_p,
+                                           const LocalView& local_p, int first, bool one_element,
+                                           const F& f) {
+  const int element = element_p(first);
+  if (one_element && shapes.computableIn(element)) {
     f(AffineShapesAt<ShapeOf<kNodes>>(shapes, local_p, first, element));
     return;
   }
@@ -267,16 +268,15 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
                         points.velocity_liquid};
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const bool affine_maps = shapes.fromAffineMaps();
   const int count = points.count;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
     if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(
-          shapes, affine_maps, local_p, element_p(first), first, one_element,
-          [&](const auto& at) { mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first); });
+      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
+        mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first);
+      });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
@@ -382,7 +382,6 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const bool affine_maps = shapes.fromAffineMaps();
   const G2PPointViews v{points.volume,         points.mass_solid,     points.mass_liquid,
                         points.density_liquid, points.velocity_solid, points.velocity_liquid};
   readVelocityUpdateValues(active, grid, records);
@@ -394,11 +393,10 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
     const int first = chunk * kLanes;
     bool wet = false, one_element = false;
     if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(shapes, affine_maps, local_p, element_p(first), first, one_element,
-                             [&](const auto& at) {
-                               updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid,
-                                                             values_i, v, sums, first, ks, kl, bad);
-                             });
+      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
+        updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid, values_i, v, sums, first,
+                                      ks, kl, bad);
+      });
       return;
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
@@ -490,7 +488,6 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const bool affine_maps = shapes.fromAffineMaps();
   records.allocate(grid.numNodes());
   readStrainValues(active, grid, records);
   const auto values_i = records.values_i;
@@ -501,15 +498,10 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
       KOKKOS_LAMBDA(const int chunk) {
         const int first = chunk * kLanes;
         const int end = first + kLanes < count ? first + kLanes : count;
-        const bool wet = end > first && liquid_m(material_p(first)) != 0;
-        bool lanes = end - first == kLanes, one_element = true;
-        for (int p = first; p < end && lanes; ++p) {
-          lanes = element_p(p) >= 0 && (liquid_m(material_p(p)) != 0) == wet;
-          one_element = one_element && element_p(p) == element_p(first);
-        }
-        if (lanes) {
+        bool wet = false, one_element = false;
+        if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
           withLaneShapes<kNodes>(
-              shapes, affine_maps, local_p, element_p(first), first, one_element,
+              shapes, element_p, local_p, first, one_element,
               [&](const auto& at) { strainIncrementsAt<kNodes>(at, wet, dt, values_i, r, first); });
           return;
         }

@@ -52,15 +52,19 @@ struct PointShapes {
 
   /// Set by relocateAndEvaluateShapes with AffineElementMaps, empty after the other
   /// evaluations: the record of a located point p whose element e = points.element(p) has
-  /// affine_e(e) = 1 is then exactly nodes connectivity(e, a), N = Shape::values(xi_p) and
-  /// dN/dx = Shape::localGradients(xi_p) J^-1 (inverse_jacobian_e(e)) with xi_p =
-  /// points.local(p), so a kernel may compute it from 16 bytes of the point instead of reading
-  /// 112 (transfer/PointShapesAt.hpp, AffineShapesAt), and get the same bits.
+  /// affine_e(e) = 1 is then exactly nodes connectivity(e, a) and affineShapes(xi_p,
+  /// inverse_jacobian_e(e)) with xi_p = points.local(p), so a kernel may compute it from 16
+  /// bytes of the point instead of reading 112 (transfer/PointShapesAt.hpp, AffineShapesAt),
+  /// and get the same bits.
   Kokkos::View<const Real* [4], MemSpace> inverse_jacobian_e;
   Kokkos::View<const int*, MemSpace> affine_e;
   Kokkos::View<const int**, MemSpace> connectivity;
   /// Whether the views above are set.
-  bool fromAffineMaps() const { return affine_e.extent(0) > 0; }
+  KOKKOS_INLINE_FUNCTION bool fromAffineMaps() const { return affine_e.extent(0) > 0; }
+  /// Whether the records of the points in `element` (>= 0) may be computed (see above).
+  KOKKOS_INLINE_FUNCTION bool computableIn(int element) const {
+    return fromAffineMaps() && affine_e(element) != 0;
+  }
 
   /// Allocate for n points.
   void allocate(int n);
