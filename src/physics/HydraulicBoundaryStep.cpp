@@ -21,7 +21,8 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
                               const Kokkos::View<const int*, MemSpace>& liquid_m,
                               const GridFields& grid, BoundaryGradientFields& fields,
                               const BoundaryGradientFields& lo) {
-  const auto shape_p = shapes.shape_p;
+  const auto element_p = points.element;
+  const auto local_p = points.local;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
   const auto mass_solid_p = points.mass_solid;
@@ -36,7 +37,8 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   Kokkos::parallel_for(
       "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        const PointShape& shape = shape_p(p);
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
         if (shape.node[0] < 0) return;
         const bool wet = liquid_m(material_p(p)) != 0;
         const Real m_mixture = mass_solid_p(p) + (wet ? mass_liquid_p(p) : 0);  // 4.51

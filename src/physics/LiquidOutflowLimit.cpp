@@ -70,12 +70,13 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
   const int num_nodes = shapes.type == ElementType::Tri3 ? 3 : 4;
   // Nodal scratch up to the highest node the points touch (only reached when limiting).
   int max_node = 0;
-  const auto shape_p = shapes.shape_p;
   Kokkos::parallel_reduce(
       "outflow_limit_nodes", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
       KOKKOS_LAMBDA(const int p, int& m) {
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
         for (int a = 0; a < num_nodes; ++a)
-          if (shape_p(p).node[a] + 1 > m) m = shape_p(p).node[a] + 1;
+          if (shape.node[a] + 1 > m) m = shape.node[a] + 1;
       },
       Kokkos::Max<int>(max_node));
   if (exchange_) max_node = nodes_;  // the exchange completes arrays of all nodes
@@ -97,7 +98,8 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
         if (residual < 0) return;
         const Real volume = pts.volume(p);
         const Real outflow = volume * flux_p(p);
-        const PointShape& shape = shape_p(p);
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
         if (outflow < 0) {
           auto gain_i = gain_sv.access();
           for (int a = 0; a < num_nodes; ++a) gain_i(shape.node[a]) += shape.value[a] * -outflow;
@@ -126,7 +128,8 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
         const Real volume = pts.volume(p);
         const Real gain = -volume * flux_p(p);
         if (!(gain > 0)) return;
-        const PointShape& shape = shape_p(p);
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
         Real back = 0;
         for (int a = 0; a < num_nodes; ++a) {
           const int i = shape.node[a];

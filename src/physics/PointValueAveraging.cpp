@@ -58,7 +58,7 @@ template <bool kCompensated, int kChannels>
 void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
                         const AveragingScratch& s) {
   const auto element_p = points.element;
-  const auto shape_p = shapes.shape_p;
+  const auto local_p = points.local;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
   const int channels = kChannels > 0 ? kChannels : s.channels();
   const auto mode_pc = s.mode_pc;
@@ -75,7 +75,8 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
         const int e = element_p(p);
         if (e < 0) return;
         const Real w = weight_p(p);
-        const PointShape& shape = shape_p(p);
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
@@ -105,7 +106,7 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
                     const AveragingScratch& scratch) {
   const int count = points.count;
   const auto element_p = points.element;
-  const auto shape_p = shapes.shape_p;
+  const auto local_p = points.local;
   const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
   const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
   const auto mode_pc = scratch.mode_pc;
@@ -115,7 +116,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int e = element_p(p);
         if (e < 0) return;
-        const PointShape& shape = shape_p(p);
+        PointShape scratch;
+        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;

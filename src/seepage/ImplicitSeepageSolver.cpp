@@ -237,7 +237,8 @@ ImplicitSeepageSolver::ImplicitSeepageSolver(const Mesh& mesh, MaterialPoints& p
   Impl& s = *impl_;
   PointShapes shapes;
   evaluatePointShapes(mesh, points, shapes);
-  const auto shape_h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.shape_p);
+  // evaluatePointShapes stores every point's record (no chunk is computed).
+  const auto shape_h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.stored_p);
   const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
   const auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.material);
   const auto porosity = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.porosity);

@@ -9,7 +9,23 @@
 namespace argine {
 
 void PointShapes::allocate(int n) {
-  shape_p = View<PointShape*>("shape_p", n);
+  stored_p = View<PointShape*>("stored_p", n);
+  computed_c = View<int*>("computed_c", (n + kLanes - 1) / kLanes);
+}
+
+Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
+                                                    const MaterialPoints& points) {
+  Kokkos::View<PointShape*, MemSpace> out("every_point_shape", points.count);
+  const PointShapes s = shapes;
+  const auto element_p = points.element;
+  const auto local_p = points.local;
+  Kokkos::parallel_for(
+      "every_point_shape", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        PointShape scratch;
+        out(p) = s.of(p, element_p, local_p, scratch);
+      });
+  return out;
 }
 
 namespace {
@@ -21,19 +37,13 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
   const auto connectivity = mesh.connectivity;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const auto shape_p = shapes.shape_p;
+  const auto shape_p = shapes.stored_p;
   Kokkos::parallel_for(
       "evaluate_point_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        PointShape& shape = shape_p(p);
         const int e = element_p(p);
         if (e < 0) {
-          for (int a = 0; a < kMaxElementNodes; ++a) {
-            shape.node[a] = -1;
-            shape.value[a] = 0;
-            shape.gradient[a][0] = 0;
-            shape.gradient[a][1] = 0;
-          }
+          setLostPointShape(shape_p(p));
           return;
         }
         Real X[kNodes][kDim];
@@ -43,12 +53,7 @@ void evaluate(const Mesh& mesh, const MaterialPoints& points, PointShapes& shape
         Real dNdx[kNodes][kDim];
         Shape::values(xi, N);
         physicalGradients<Shape>(X, xi, dNdx);
-        for (int a = 0; a < kNodes; ++a) {
-          shape.node[a] = connectivity(e, a);
-          shape.value[a] = N[a];
-          shape.gradient[a][0] = dNdx[a][0];
-          shape.gradient[a][1] = dNdx[a][1];
-        }
+        setPointShape<Shape>(connectivity, e, N, dNdx, shape_p(p));
       });
 }
 
@@ -81,92 +86,140 @@ KOKKOS_INLINE_FUNCTION bool localCoordinates(const Real X[][kDim], const Real x[
   return mapToLocal<Shape>(X, x, xi);
 }
 
+/// The relocation of one point and the writing of its record: the two halves of a chunk's
+/// relocation (relocate), so that a chunk whose shapes are computed writes no record.
+template <class Shape>
+struct PointRelocation {
+  static constexpr int kNodes = Shape::kNodes;
+  decltype(Mesh::coordinates) coordinates;
+  decltype(Mesh::connectivity) connectivity;
+  decltype(MaterialPoints::element) element_p;
+  decltype(MaterialPoints::local) local_p;
+  decltype(MaterialPoints::position) position_p;
+  decltype(PointShapes::stored_p) shape_p;
+  decltype(AffineElementMaps::inverse_jacobian_e) inverse_e;
+  decltype(AffineElementMaps::origin_e) origin_e;
+  decltype(AffineElementMaps::affine_e) affine_e;
+  PointLocator locator;
+  bool with_maps;  // AffineElementMaps given (PointShapes::fromAffineMaps)
+
+  KOKKOS_FORCEINLINE_FUNCTION bool affine(int e) const { return with_maps && affine_e(e) != 0; }
+
+  /// xi = J^-1 (x - x_0) in an affine element, whichever path found the element, so
+  /// relocating a point twice from one position gives the same shapes bit for bit. Inlined
+  /// by force, like the members below: called, it returned xi through the stack as two
+  /// scalars read back as a vector, a store-forwarding stall that doubled the relocation.
+  KOKKOS_FORCEINLINE_FUNCTION void affineLocal(int e, const Real x[kDim], Real xi[kDim]) const {
+    const Real y0 = x[0] - origin_e(e, 0), y1 = x[1] - origin_e(e, 1);
+    xi[0] = inverse_e(e, 0) * y0 + inverse_e(e, 1) * y1;
+    xi[1] = inverse_e(e, 2) * y0 + inverse_e(e, 3) * y1;
+  }
+
+  /// Point p's element (-1: outside the mesh) and local coordinates xi from its position,
+  /// stored; counts the points `outside` and those whose element changed (`moved`).
+  KOKKOS_FORCEINLINE_FUNCTION int locate(int p, int& outside, int& moved, Real xi[kDim]) const {
+    const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
+    int e = element_p(p);
+    xi[0] = local_p(p, 0);
+    xi[1] = local_p(p, 1);
+    bool found = false;
+    if (e >= 0) {  // fast path: still strictly inside the same element
+      Real trial[kDim];
+      bool mapped = true;
+      if (affine(e)) {
+        affineLocal(e, x, trial);
+      } else {
+        Real X[kNodes][kDim];
+        gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+        mapped = localCoordinates<Shape>(X, x, trial);
+      }
+      if (mapped && Shape::margin(trial) >= locator.tolerance()) {
+        xi[0] = trial[0];
+        xi[1] = trial[1];
+        found = true;
+      }
+    }
+    if (!found) {
+      const int old = e;
+      e = locator.locate(x, xi, e);
+      element_p(p) = e;
+      if (e != old) ++moved;
+      if (e < 0) {
+        ++outside;
+        return e;
+      }
+      if (affine(e)) affineLocal(e, x, xi);
+    }
+    local_p(p, 0) = xi[0];
+    local_p(p, 1) = xi[1];
+    return e;
+  }
+
+  /// Point p's record at xi in element e (located by locate()).
+  KOKKOS_FORCEINLINE_FUNCTION void writeShape(int p, int e, const Real xi[kDim]) const {
+    PointShape& shape = shape_p(p);
+    if (e < 0) {
+      setLostPointShape(shape);
+      return;
+    }
+    Real N[kNodes];
+    Real dNdx[kNodes][kDim];
+    if (affine(e)) {  // dN/dx = dN/dxi J^-1, J constant
+      const Real inverse[4] = {inverse_e(e, 0), inverse_e(e, 1), inverse_e(e, 2), inverse_e(e, 3)};
+      affineShapes<Shape>(xi, inverse, N, dNdx);
+    } else {
+      Real X[kNodes][kDim];
+      gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+      Shape::values(xi, N);
+      physicalGradients<Shape>(X, xi, dNdx);
+    }
+    setPointShape<Shape>(connectivity, e, N, dNdx, shape);
+  }
+};
+
 template <class Shape>
 RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
                           const AffineElementMaps& maps, MaterialPoints& points,
                           PointShapes& shapes) {
-  constexpr int kNodes = Shape::kNodes;
-  const auto coordinates = mesh.coordinates;
-  const auto connectivity = mesh.connectivity;
-  const auto element_p = points.element;
-  const auto local_p = points.local;
-  const auto position_p = points.position;
-  const auto shape_p = shapes.shape_p;
-  const auto inverse_e = maps.inverse_jacobian_e;
-  const auto origin_e = maps.origin_e;
-  const auto affine_e = maps.affine_e;
-  const bool with_maps = shapes.fromAffineMaps();  // set from `maps` by the caller
+  const PointRelocation<Shape> relocation{
+      mesh.coordinates, mesh.connectivity, points.element,          points.local,
+      points.position,  shapes.stored_p,   maps.inverse_jacobian_e, maps.origin_e,
+      maps.affine_e,    locator,           shapes.fromAffineMaps()};
+  const int count = points.count;
   RelocationCounts counts;
+  // By chunks of kLanes points, the chunks of the transfers: a chunk found in one affine
+  // element (PointShapes::computedChunk) gets no records, 112 bytes a point. A chunk that
+  // was in one before is located first and writes its records only if it no longer is; any
+  // other chunk writes them as it goes (one pass, as before chunks) and stays a chunk with
+  // records until the next relocation, even if its points have come together.
+  const PointShapes rule = shapes;
+  const auto computed_c = shapes.computed_c;
   Kokkos::parallel_reduce(
-      "relocate_and_evaluate_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p, int& outside, int& moved) {
-        PointShape& shape = shape_p(p);
-        const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
-        // xi = J^-1 (x - x_0) in an affine element, whichever path found the element, so
-        // relocating a point twice from one position gives the same shapes bit for bit.
-        auto affineLocal = [&](const int element, Real local[kDim]) {
-          const Real y0 = x[0] - origin_e(element, 0), y1 = x[1] - origin_e(element, 1);
-          local[0] = inverse_e(element, 0) * y0 + inverse_e(element, 1) * y1;
-          local[1] = inverse_e(element, 2) * y0 + inverse_e(element, 3) * y1;
-        };
-        int e = element_p(p);
-        Real X[kNodes][kDim];
-        bool gathered = false;  // X holds the nodes of element e
-        Real xi[kDim] = {local_p(p, 0), local_p(p, 1)};
-        bool found = false;
-        if (e >= 0) {  // fast path: still strictly inside the same element
-          Real trial[kDim];
-          bool mapped;
-          if (with_maps && affine_e(e)) {
-            affineLocal(e, trial);
-            mapped = true;
-          } else {
-            gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
-            gathered = true;
-            mapped = localCoordinates<Shape>(X, x, trial);
+      "relocate_and_evaluate_shapes",
+      Kokkos::RangePolicy<ExecSpace>(0, (count + kLanes - 1) / kLanes),
+      KOKKOS_LAMBDA(const int chunk, int& outside, int& moved) {
+        const int first = chunk * kLanes;
+        bool was_one_element = first + kLanes <= count;
+        for (int l = 1; l < kLanes && was_one_element; ++l)
+          was_one_element = relocation.element_p(first + l) == relocation.element_p(first);
+        if (!was_one_element || !rule.computedChunk(relocation.element_p(first), true)) {
+          computed_c(chunk) = 0;
+          for (int p = first; p < first + kLanes && p < count; ++p) {
+            Real xi[kDim];
+            relocation.writeShape(p, relocation.locate(p, outside, moved, xi), xi);
           }
-          if (mapped && Shape::margin(trial) >= locator.tolerance()) {
-            xi[0] = trial[0];
-            xi[1] = trial[1];
-            found = true;
-          }
+          return;
         }
-        if (!found) {
-          const int old = e;
-          e = locator.locate(x, xi, e);
-          element_p(p) = e;
-          if (e != old) ++moved;
-          gathered = false;
-          if (e < 0) {
-            ++outside;
-            for (int a = 0; a < kMaxElementNodes; ++a) {
-              shape.node[a] = -1;
-              shape.value[a] = 0;
-              shape.gradient[a][0] = shape.gradient[a][1] = 0;
-            }
-            return;
-          }
-          if (with_maps && affine_e(e)) affineLocal(e, xi);
-        }
-        local_p(p, 0) = xi[0];
-        local_p(p, 1) = xi[1];
-        Real N[kNodes];
-        Real dNdx[kNodes][kDim];
-        if (with_maps && affine_e(e)) {  // dN/dx = dN/dxi J^-1, J constant
-          const Real inverse[4] = {inverse_e(e, 0), inverse_e(e, 1), inverse_e(e, 2),
-                                   inverse_e(e, 3)};
-          affineShapes<Shape>(xi, inverse, N, dNdx);
-        } else {
-          Shape::values(xi, N);
-          if (!gathered) gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
-          physicalGradients<Shape>(X, xi, dNdx);
-        }
-        for (int a = 0; a < kNodes; ++a) {
-          shape.node[a] = connectivity(e, a);
-          shape.value[a] = N[a];
-          shape.gradient[a][0] = dNdx[a][0];
-          shape.gradient[a][1] = dNdx[a][1];
-        }
+        int element[kLanes];
+        Real xi[kLanes][kDim];
+        for (int l = 0; l < kLanes; ++l)
+          element[l] = relocation.locate(first + l, outside, moved, xi[l]);
+        bool one_element = true;
+        for (int l = 1; l < kLanes; ++l) one_element &= element[l] == element[0];
+        const bool computed = rule.computedChunk(element[0], one_element);
+        computed_c(chunk) = computed;
+        if (computed) return;
+        for (int l = 0; l < kLanes; ++l) relocation.writeShape(first + l, element[l], xi[l]);
       },
       counts.lost, counts.changed_element);
   return counts;
@@ -200,6 +253,7 @@ void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointSh
   shapes.inverse_jacobian_e = {};
   shapes.affine_e = {};
   shapes.connectivity = {};
+  Kokkos::deep_copy(shapes.computed_c, 0);  // every record stored
   withShape(mesh.type, [&](auto shape) { evaluate<decltype(shape)>(mesh, points, shapes); });
 }
 

@@ -19,10 +19,15 @@ template <>
 struct PointShapesAt<Real> {
   using Value = Real;
   static constexpr int kCount = 1;  ///< points
-  const PointShape& shape;
+  PointShape computed;              ///< the shapes, where they are not stored
+  const PointShape& shape;          ///< the record or `computed` (PointShapes::of)
 
-  KOKKOS_INLINE_FUNCTION PointShapesAt(const Kokkos::View<PointShape*, MemSpace>& shape_p, int p)
-      : shape(shape_p(p)) {}
+  /// Point p, located.
+  template <class ElementView, class LocalView>
+  KOKKOS_INLINE_FUNCTION PointShapesAt(const PointShapes& shapes, const ElementView& element_p,
+                                       const LocalView& local_p, int p)
+      : shape(shapes.of(p, element_p, local_p, computed)) {}
+  PointShapesAt(const PointShapesAt&) = delete;  // `shape` may refer to `computed`
   KOKKOS_INLINE_FUNCTION int node(int a, int /*lane*/ = 0) const { return shape.node[a]; }
   KOKKOS_INLINE_FUNCTION Real value(int a) const { return shape.value[a]; }
   KOKKOS_INLINE_FUNCTION Real gradient(int a, int d) const { return shape.gradient[a][d]; }
@@ -40,11 +45,11 @@ struct PointShapesAt<Lanes> {
   const PointShape* shape[kLanes];
   bool one_element;  ///< all lanes have the same nodes
 
-  /// The points p .. p + kLanes - 1, all located; `one_element`: all in one element.
-  KOKKOS_INLINE_FUNCTION PointShapesAt(const Kokkos::View<PointShape*, MemSpace>& shape_p, int p,
-                                       bool same_element)
+  /// The points p .. p + kLanes - 1 (a chunk), all located, with records (not
+  /// PointShapes::computed_c); `one_element`: all in one element.
+  KOKKOS_INLINE_FUNCTION PointShapesAt(const PointShapes& shapes, int p, bool same_element)
       : one_element(same_element) {
-    for (int l = 0; l < kLanes; ++l) shape[l] = &shape_p(p + l);
+    for (int l = 0; l < kLanes; ++l) shape[l] = &shapes.stored_p(p + l);
   }
   KOKKOS_INLINE_FUNCTION int node(int a, int lane) const { return shape[lane]->node[a]; }
   KOKKOS_INLINE_FUNCTION Lanes value(int a) const {
@@ -66,10 +71,10 @@ struct PointShapesAt<Lanes> {
   }
 };
 
-/// The same as PointShapesAt<Lanes> for kLanes points in one affine element, computed from
-/// their local coordinates and the element's J^-1 (PointShapes::computableIn) instead of
-/// read from their records: 16 bytes a point instead of 112, the same bits (affineShapes,
-/// the formula the relocation wrote the records with, per lane).
+/// The same as PointShapesAt<Lanes> for a chunk of kLanes points whose shapes are computed
+/// (PointShapes::computed_c: one affine element), from their local coordinates and the
+/// element's J^-1, all lanes at once: 16 bytes a point instead of a 112-byte record, the bits
+/// PointShapes::of gives each point (affineShapes, the one formula).
 template <class Shape>
 struct AffineShapesAt {
   using Value = Lanes;

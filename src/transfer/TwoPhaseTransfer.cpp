@@ -33,20 +33,18 @@ void withNodeCount(const PointShapes& shapes, Function&& f) {
 template <int kNodes>
 using ShapeOf = std::conditional_t<kNodes == 3, Tri3, Quad4>;
 
-/// Calls f(at) with the shapes of the kLanes points from `first`, all located: computed from
-/// their local coordinates (AffineShapesAt) when they lie in one element where `shapes`
-/// allows it (computableIn), else read from their records (PointShapesAt<Lanes>). The same
-/// bits either way.
+/// Calls f(at) with the shapes of the chunk of kLanes points from `first`, all located:
+/// computed from their local coordinates (AffineShapesAt) where the chunk's shapes are
+/// (PointShapes::computed_c), else read from their records (PointShapesAt<Lanes>).
 template <int kNodes, class ElementView, class LocalView, class F>
 KOKKOS_INLINE_FUNCTION void withLaneShapes(const PointShapes& shapes, const ElementView& element_p,
                                            const LocalView& local_p, int first, bool one_element,
                                            const F& f) {
-  const int element = element_p(first);
-  if (one_element && shapes.computableIn(element)) {
-    f(AffineShapesAt<ShapeOf<kNodes>>(shapes, local_p, first, element));
+  if (shapes.computed_c(first / kLanes)) {
+    f(AffineShapesAt<ShapeOf<kNodes>>(shapes, local_p, first, element_p(first)));
     return;
   }
-  f(PointShapesAt<Lanes>(shapes.shape_p, first, one_element));
+  f(PointShapesAt<Lanes>(shapes, first, one_element));
 }
 
 /// Where a P2G kernel adds its points' contributions, as rows of slots (NodeSumSlot) per
@@ -179,7 +177,6 @@ KineticTotals scatterFromPoints(const char* name, int count, const Body& body,
 
 /// The nodal sums of the P2G (4.40-4.47), as point fields and their totals.
 struct P2GPointViews {
-  Kokkos::View<PointShape*, MemSpace> shape_p;
   Kokkos::View<int*, MemSpace> material_p;
   Kokkos::View<Real*, MemSpace> volume_p, mass_solid_p, mass_liquid_p, density_liquid_p, porosity_p,
       saturation_p, conductivity_p, pressure_p;
@@ -261,11 +258,10 @@ template <int kNodes>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
                          NodeRecords& records, GridFields& grid, const GridFields* compensation) {
-  const P2GPointViews v{shapes.shape_p,         points.material,         points.volume,
-                        points.mass_solid,      points.mass_liquid,      points.density_liquid,
-                        points.porosity,        points.saturation,       points.conductivity,
-                        points.pressure_liquid, points.stress_effective, points.velocity_solid,
-                        points.velocity_liquid};
+  const P2GPointViews v{points.material,         points.volume,         points.mass_solid,
+                        points.mass_liquid,      points.density_liquid, points.porosity,
+                        points.saturation,       points.conductivity,   points.pressure_liquid,
+                        points.stress_effective, points.velocity_solid, points.velocity_liquid};
   const auto element_p = points.element;
   const auto local_p = points.local;
   const int count = points.count;
@@ -281,8 +277,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
       if (element_p(p) < 0) continue;
-      mapPointToGrid<kNodes>(PointShapesAt<Real>(v.shape_p, p), liquid_m(v.material_p(p)) != 0,
-                             gravity, v, sums, p);
+      mapPointToGrid<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+                             liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
     }
   };
   scatterFromPoints("p2g_two_phase", (count + kLanes - 1) / kLanes, body, active, records, grid,
@@ -378,7 +374,6 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 VelocityBlend blend, MaterialPoints& points,
                                                 NodeRecords& records, GridFields& grid,
                                                 const GridFields* compensation) {
-  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
@@ -401,8 +396,9 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
     }
     for (int p = first; p < first + kLanes && p < count; ++p) {
       if (element_p(p) < 0) continue;
-      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shape_p, p), liquid_m(material_p(p)) != 0,
-                                    dt, pic_solid, pic_liquid, values_i, v, sums, p, ks, kl, bad);
+      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+                                    liquid_m(material_p(p)) != 0, dt, pic_solid, pic_liquid,
+                                    values_i, v, sums, p, ks, kl, bad);
     }
   };
   return scatterFromPoints("g2p_velocities_p2g_momenta", (count + kLanes - 1) / kLanes, body,
@@ -484,7 +480,6 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
                                       const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                       const GridFields& grid, NodeRecords& records, Real dt,
                                       PointRates& rates) {
-  const auto shape_p = shapes.shape_p;
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
@@ -509,7 +504,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
           if (element_p(p) < 0)
             clearStrainIncrements(r, p);
           else
-            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shape_p, p),
+            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
                                        liquid_m(material_p(p)) != 0, dt, values_i, r, p);
         }
       });

@@ -51,7 +51,7 @@ TEST(SeepagePointTerms, FourPointElementStorageMatrix) {
   const MaterialPoints points = test::seedUniform(mesh);
   PointShapes shapes;
   evaluatePointShapes(mesh, points, shapes);
-  const auto shape = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.shape_p);
+  const auto shape = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.stored_p);
   Real m[4][4] = {};
   for (int p = 0; p < 4; ++p) addPointStorageMatrix(shape(p), 4, 0.25, m);
   // Mesh node order of the element: counter-clockwise from (0,0), as the local nodes.

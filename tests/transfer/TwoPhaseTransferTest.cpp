@@ -249,7 +249,7 @@ TEST_P(TransferOnShape, VelocityBlendIsFlipAtZeroAndTakesTheGridVelocitiesAtOne)
   active.rebuild(mesh, points);
   const Real dt = 0.01;
   const auto vs0 = hostCopy(points.velocity_solid), vl0 = hostCopy(points.velocity_liquid);
-  const auto shape = hostCopy(shapes.shape_p);
+  const auto shape = hostCopy(shapes.stored_p);
   const auto mat = hostCopy(points.material);
   const auto gvs = hostCopy(grid.velocity_solid_i), gvl = hostCopy(grid.velocity_liquid_i);
   const auto gas = hostCopy(grid.acceleration_solid_i);
@@ -330,7 +330,7 @@ TEST_P(TransferOnShape, PicShareRemovesTheVelocityNoiseTheGridCannotSeeAndKeepsM
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
   const int per = GetParam() == ElementType::Quad4 ? 4 : 3, nodes = mesh.numNodes();
-  const auto shape = hostCopy(shapes.shape_p);
+  const auto shape = hostCopy(shapes.stored_p);
   const auto ms = hostCopy(points.mass_solid);
   auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.velocity_solid);
   std::vector<std::vector<Real>> mass(nodes, std::vector<Real>(nodes, 0.0));  // consistent
@@ -546,13 +546,14 @@ TEST_P(TransferOnShape, LanesGiveTheOnePointResultsBitForBit) {
 }
 
 TEST_P(TransferOnShape, ShapesComputedInAffineElementsGiveTheRecordBitsAndNoRecordIsRead) {
-  // Where kLanes points lie in one affine element and the shapes come from the relocation
-  // with AffineElementMaps, the kernels compute N and dN/dx from the points' local
-  // coordinates and the element's J^-1 (AffineShapesAt) instead of reading the records,
-  // which the relocation wrote with the same formulas: the bits must be the same. Run A: the
-  // maps, with every record's weights NaN, so that reading one shows; run B: the same
-  // records, clean, read (no maps). Every chunk of kLanes points lies in one element: the
-  // Quad4 points as seeded (four an element), the Tri3 ones with an element's last repeated.
+  // A chunk of kLanes points in one affine element, relocated with AffineElementMaps, has no
+  // records (PointShapes::computed_c): the kernels compute N and dN/dx from the points'
+  // local coordinates and the element's J^-1, four at once (AffineShapesAt) or, in a chunk
+  // of wet and dry points, one by one (PointShapes::of). Run A: the maps, with every record
+  // NaN before the relocation, so that writing or reading one shows; run B: records holding
+  // what PointShapes::of gives, read (no maps). The bits must be the same. Every chunk lies in
+  // one element: the Quad4 points as seeded (four an element), the Tri3 ones with an
+  // element's last point repeated.
   auto scene = randomScene(5, 4, 2.5, 2.0, GetParam(), 29);
   const Mesh& mesh = scene.mesh;
   const int per = mesh.type == ElementType::Quad4 ? 4 : 3;
@@ -567,20 +568,27 @@ TEST_P(TransferOnShape, ShapesComputedInAffineElementsGiveTheRecordBitsAndNoReco
   auto run = [&](bool computed, bool compensated) {
     TransferRun r;
     r.points = rearranged(scene.points, from);
-    for (int p = 0; p < r.points.count; ++p) r.points.material(p) = (p / kLanes) % 3 == 2;
+    // Dry chunks, wet chunks, and chunks of both (point by point).
+    for (int p = 0; p < r.points.count; ++p)
+      r.points.material(p) = (p / kLanes) % 3 == 2 || ((p / kLanes) % 5 == 1 && p % 2 == 0);
+    r.shapes.allocate(r.points.count);
+    for (int p = 0; p < r.points.count; ++p)
+      for (int a = 0; a < kMaxElementNodes; ++a) {
+        PointShape& shape = r.shapes.stored_p(p);
+        shape.value[a] = shape.gradient[a][0] = shape.gradient[a][1] = std::nan("");
+      }
     const RelocationCounts found =
         relocateAndEvaluateShapes(mesh, locator, maps, r.points, r.shapes);
     EXPECT_EQ(found.lost, 0);
     EXPECT_TRUE(r.shapes.fromAffineMaps());
-    for (int p = 0; p < r.points.count; ++p)
+    for (int p = 0; p < r.points.count; ++p) {
       EXPECT_EQ(r.points.element(p), r.points.element(p - p % kLanes)) << p;
-    if (computed) {
-      for (int p = 0; p < r.points.count; ++p)
-        for (int a = 0; a < kMaxElementNodes; ++a) {
-          PointShape& shape = r.shapes.shape_p(p);
-          shape.value[a] = shape.gradient[a][0] = shape.gradient[a][1] = std::nan("");
-        }
-    } else {
+      EXPECT_TRUE(std::isnan(r.shapes.stored_p(p).value[0])) << "record written: " << p;
+      EXPECT_EQ(r.shapes.computed_c(p / kLanes), 1) << p;
+    }
+    if (!computed) {  // every point's record as PointShapes::of computes it, read
+      Kokkos::deep_copy(r.shapes.stored_p, everyPointShape(r.shapes, r.points));
+      Kokkos::deep_copy(r.shapes.computed_c, 0);
       r.shapes.affine_e = {};
       r.shapes.inverse_jacobian_e = {};
       r.shapes.connectivity = {};

@@ -137,7 +137,8 @@ void checkRelocation(ElementType type) {
 
   const auto element = host(points.element), element_general = host(general.element);
   const auto local = host(points.local), local_general = host(general.local);
-  const auto shape = host(fast.shape_p), shape_general = host(slow.shape_p);
+  const auto shape = host(everyPointShape(fast, points)),
+             shape_general = host(everyPointShape(slow, general));
   int changed = 0;
   double worst_local = 0, worst_value = 0, worst_gradient = 0;
   for (int p = 0; p < points.count; ++p) {
@@ -156,7 +157,7 @@ void checkRelocation(ElementType type) {
   // Relocating again from the same positions (as after a sort) changes nothing, bit for bit.
   const RelocationCounts again = relocateAndEvaluateShapes(scene.mesh, locator, maps, points, fast);
   const auto local_again = host(points.local);
-  const auto shape_again = host(fast.shape_p);
+  const auto shape_again = host(everyPointShape(fast, points));
   bool same = again.changed_element == 0 && again.lost == 1;
   for (int p = 0; p < points.count; ++p)
     for (int a = 0; a < kMaxElementNodes; ++a)

@@ -5,6 +5,7 @@
 /// that every particle-grid kernel of the step reads. Caching them means the Jacobian of a
 /// point's element is inverted once per step instead of once per transfer.
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -39,6 +40,34 @@ KOKKOS_INLINE_FUNCTION void affineShapes(const T xi[kDim], const Real inverse[4]
     for (int i = 0; i < kDim; ++i) dNdx[a][i] = dN[a][0] * inverse[i] + dN[a][1] * inverse[2 + i];
 }
 
+/// A point's record from its element's nodes, N and dN/dx; the slots past Shape::kNodes get
+/// node -1 and zero weights, so that a record's bits depend on nothing else.
+template <class Shape, class Connectivity>
+KOKKOS_INLINE_FUNCTION void setPointShape(const Connectivity& connectivity, int e,
+                                          const Real N[Shape::kNodes],
+                                          const Real dNdx[Shape::kNodes][kDim], PointShape& shape) {
+  for (int a = 0; a < Shape::kNodes; ++a) {
+    shape.node[a] = connectivity(e, a);
+    shape.value[a] = N[a];
+    shape.gradient[a][0] = dNdx[a][0];
+    shape.gradient[a][1] = dNdx[a][1];
+  }
+  for (int a = Shape::kNodes; a < kMaxElementNodes; ++a) {
+    shape.node[a] = -1;
+    shape.value[a] = 0;
+    shape.gradient[a][0] = shape.gradient[a][1] = 0;
+  }
+}
+
+/// The record of a point outside the mesh: node -1 and zero weights.
+KOKKOS_INLINE_FUNCTION void setLostPointShape(PointShape& shape) {
+  for (int a = 0; a < kMaxElementNodes; ++a) {
+    shape.node[a] = -1;
+    shape.value[a] = 0;
+    shape.gradient[a][0] = shape.gradient[a][1] = 0;
+  }
+}
+
 struct PointShapes {
   template <class T>
   using View = Kokkos::View<T, MemSpace>;
@@ -47,30 +76,82 @@ struct PointShapes {
   /// from one place at fixed offsets. Three Views (nodes, values, gradients) cost three
   /// memory streams and runtime row strides: ~10 % more instructions and time in P2G and
   /// G2P on Serial (verification/benchmark). A GPU port may want them split again.
-  View<PointShape*> shape_p;
+  ///
+  /// Written for every point by evaluatePointShapes; by the relocation with
+  /// AffineElementMaps for the points of every chunk that is not computed (computed_c).
+  /// Read a point's shapes through of(), which knows which; a kernel that takes a chunk at
+  /// once asks computed_c. Like the records, the chunks hold for the point order they were
+  /// made in: points sorted or migrated are relocated before their shapes are read.
+  View<PointShape*> stored_p;
+  /// 1 for a chunk c of kLanes points (p / kLanes = c) whose shapes are computed where they
+  /// are read, from 16 bytes of local coordinates a point instead of a 112-byte record (the
+  /// same bits), and which has no records; 0 for a chunk with records. Set by the
+  /// relocation with AffineElementMaps (computedChunk decides), 0 everywhere after the other
+  /// evaluations.
+  View<int*> computed_c;
   ElementType type = ElementType::Quad4;  ///< element shape the kernels dispatch on
 
   /// Set by relocateAndEvaluateShapes with AffineElementMaps, empty after the other
-  /// evaluations: the record of a located point p whose element e = points.element(p) has
-  /// affine_e(e) = 1 is then exactly nodes connectivity(e, a) and affineShapes(xi_p,
-  /// inverse_jacobian_e(e)) with xi_p = points.local(p), so a kernel may compute it from 16
-  /// bytes of the point instead of reading 112 (transfer/PointShapesAt.hpp, AffineShapesAt),
-  /// and get the same bits.
+  /// evaluations: the shapes of a located point p whose element e has affine_e(e) = 1 are
+  /// nodes connectivity(e, a) and affineShapes(xi_p, inverse_jacobian_e(e)), xi_p =
+  /// points.local(p).
   Kokkos::View<const Real* [4], MemSpace> inverse_jacobian_e;
   Kokkos::View<const int*, MemSpace> affine_e;
   Kokkos::View<const int**, MemSpace> connectivity;
   /// Whether the views above are set.
   KOKKOS_INLINE_FUNCTION bool fromAffineMaps() const { return affine_e.extent(0) > 0; }
-  /// Whether the records of the points in `element` (>= 0) may be computed (see above).
-  KOKKOS_INLINE_FUNCTION bool computableIn(int element) const {
-    return fromAffineMaps() && affine_e(element) != 0;
+
+  /// Whether the relocation makes a chunk's shapes computed (computed_c): all kLanes of its
+  /// points exist and lie in one element (`one_element`, `element`) that is affine, with the
+  /// maps set. Only whole chunks in one element: a Quad4 mesh seeded four points an element
+  /// and sorted is made of them, and where the points of a chunk straddle elements (Tri3,
+  /// boundaries) reading the records is cheaper than computing each lane's element.
+  KOKKOS_INLINE_FUNCTION bool computedChunk(int element, bool one_element) const {
+    return one_element && element >= 0 && fromAffineMaps() && affine_e(element) != 0;
+  }
+
+  /// The shapes of point p at local coordinates local_p(p, .) in element element_p(p): its
+  /// record, or computed into `scratch` in a computed chunk (the bits the record would
+  /// hold). A lost point's record has node -1 and zero weights.
+  template <class ElementView, class LocalView>
+  KOKKOS_FORCEINLINE_FUNCTION const PointShape& of(int p, const ElementView& element_p,
+                                                   const LocalView& local_p,
+                                                   PointShape& scratch) const {
+    if (!computed_c(static_cast<unsigned>(p) / kLanes)) return stored_p(p);  // p >= 0
+    const Real xi[kDim] = {local_p(p, 0), local_p(p, 1)};
+    computeIn(element_p(p), xi, scratch);
+    return scratch;
   }
 
   /// Allocate for n points.
   void allocate(int n);
   /// Number of points allocated for.
-  int count() const { return static_cast<int>(shape_p.extent(0)); }
+  KOKKOS_INLINE_FUNCTION int count() const { return static_cast<int>(stored_p.extent(0)); }
+
+ private:
+  /// The shapes at xi in element e of a computed chunk (kept out of of(), which every
+  /// per-point kernel inlines).
+  KOKKOS_INLINE_FUNCTION void computeIn(int e, const Real xi[kDim], PointShape& shape) const {
+    const Real inverse[4] = {inverse_jacobian_e(e, 0), inverse_jacobian_e(e, 1),
+                             inverse_jacobian_e(e, 2), inverse_jacobian_e(e, 3)};
+    if (type == ElementType::Tri3)
+      computeIn<Tri3>(e, xi, inverse, shape);
+    else
+      computeIn<Quad4>(e, xi, inverse, shape);
+  }
+  template <class Shape>
+  KOKKOS_INLINE_FUNCTION void computeIn(int e, const Real xi[kDim], const Real inverse[4],
+                                        PointShape& shape) const {
+    Real N[Shape::kNodes], dNdx[Shape::kNodes][kDim];
+    affineShapes<Shape>(xi, inverse, N, dNdx);
+    setPointShape<Shape>(connectivity, e, N, dNdx, shape);
+  }
 };
+
+/// Every point's shapes as PointShapes::of gives them (stored or computed), in one View: for
+/// tests and checks that compare shapes, not for the step.
+Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
+                                                    const MaterialPoints& points);
 
 /// Evaluate N and dN/dx at every point from its element and local coordinates (points with
 /// element < 0, lost from the mesh, get node -1 and zero weights). Reallocates `shapes` when
