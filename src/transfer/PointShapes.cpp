@@ -116,12 +116,11 @@ struct PointRelocation {
   }
 
   /// Point p's element (-1: outside the mesh) and local coordinates xi from its position,
-  /// stored; counts the points `outside` and those whose element changed (`moved`).
+  /// stored (xi is not set for a point outside); counts the points `outside` and those whose
+  /// element changed (`moved`).
   KOKKOS_FORCEINLINE_FUNCTION int locate(int p, int& outside, int& moved, Real xi[kDim]) const {
     const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
     int e = element_p(p);
-    xi[0] = local_p(p, 0);
-    xi[1] = local_p(p, 1);
     bool found = false;
     if (e >= 0) {  // fast path: still strictly inside the same element
       Real trial[kDim];
