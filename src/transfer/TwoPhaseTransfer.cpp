@@ -196,9 +196,9 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
   const T m_liquid = wet ? load<T>(v.mass_liquid_p, p) : splat<T>(0);
   // Bishop total stress, chi = S_L (4.5), p_L compression positive.
   const T bishop = wet ? load<T>(v.saturation_p, p) * load<T>(v.pressure_p, p) : splat<T>(0);
-  const T sxx = load<T>(v.stress_p, p, XX) - bishop;
-  const T syy = load<T>(v.stress_p, p, YY) - bishop;
-  const T sxy = load<T>(v.stress_p, p, XY);
+  T stress[kStressComponents];
+  loadComponents(v.stress_p, p, stress);
+  const T sxx = stress[XX] - bishop, syy = stress[YY] - bishop, sxy = stress[XY];
   const T weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
   const T vsx = load<T>(v.velocity_solid_p, p, 0), vsy = load<T>(v.velocity_solid_p, p, 1);
   T row[kNodes][kNodeSumRow];
@@ -316,11 +316,10 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
   if (wet) interpolate(kReadAccelerationLiquid, al);
   if (wet && pic_liquid > 0) interpolate(kReadVelocityLiquid, vl);
   T v_solid[kDim];
-  for (int d = 0; d < kDim; ++d) {
-    const T old = load<T>(v.velocity_solid_p, p, d);
-    v_solid[d] = old + dt * as[d] + pic_solid * (vs_grid[d] - old);
-    store(v.velocity_solid_p, p, d, v_solid[d]);
-  }
+  loadComponents(v.velocity_solid_p, p, v_solid);
+  for (int d = 0; d < kDim; ++d)
+    v_solid[d] = v_solid[d] + dt * as[d] + pic_solid * (vs_grid[d] - v_solid[d]);
+  storeComponents(v.velocity_solid_p, p, v_solid);
   const T vsx = v_solid[0], vsy = v_solid[1];
   const T ms = load<T>(v.mass_solid_p, p);
   Real energy[kPoints];
@@ -341,14 +340,14 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
     // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
     // (the header); with pic_liquid = 0 this is FLIP.
     T v_liquid[kDim];
+    loadComponents(v.velocity_liquid_p, p, v_liquid);
     for (int d = 0; d < kDim; ++d) {
-      const T flip = load<T>(v.velocity_liquid_p, p, d) + dt * al[d];
+      const T flip = v_liquid[d] + dt * al[d];
       const T relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
       v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
     }
     const T vlx = v_liquid[0], vly = v_liquid[1];
-    store(v.velocity_liquid_p, p, 0, vlx);
-    store(v.velocity_liquid_p, p, 1, vly);
+    storeComponents(v.velocity_liquid_p, p, v_liquid);
     spill(0.5 * load<T>(v.mass_liquid_p, p) * (vlx * vlx + vly * vly), energy);
     const auto liquid_finite = both(kmath::isFinite(vlx), kmath::isFinite(vly));
     for (int l = 0; l < kPoints; ++l) {
@@ -427,13 +426,13 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
     v[0] += N * vx;
     v[1] += N * vy;
   }
-  store(rates.strain_increment_p, p, XX, dt * L[0][0]);
-  store(rates.strain_increment_p, p, YY, dt * L[1][1]);
-  store(rates.strain_increment_p, p, ZZ, splat<T>(0));                     // plane strain
-  store(rates.strain_increment_p, p, XY, 0.5 * dt * (L[0][1] + L[1][0]));  // tensor shear
-  store(rates.spin_increment_p, p, spinIncrement(dt, L[0][1], L[1][0]));   // Jaumann rotation
-  store(rates.displacement_increment_p, p, 0, dt * v[0]);
-  store(rates.displacement_increment_p, p, 1, dt * v[1]);
+  const T strain[kStressComponents] = {dt * L[0][0], dt * L[1][1],
+                                       splat<T>(0),                      // plane strain
+                                       0.5 * dt * (L[0][1] + L[1][0])};  // tensor shear
+  storeComponents(rates.strain_increment_p, p, strain);
+  store(rates.spin_increment_p, p, spinIncrement(dt, L[0][1], L[1][0]));  // Jaumann rotation
+  const T displacement[kDim] = {dt * v[0], dt * v[1]};
+  storeComponents(rates.displacement_increment_p, p, displacement);
 
   T divergence = {}, relative_divergence = {}, content = {};
   T w[kDim] = {}, gradient[kDim] = {};

@@ -90,5 +90,69 @@ TEST(Lanes, LoadOfPairsAndQuadruplesGivesTheComponentOfEachPoint) {
     }
 }
 
+TEST(Lanes, AllComponentsAreLoadedAndStoredAsTheOneComponentLoadsAndStores) {
+  // loadComponents / storeComponents take (point, 4) and (point, 2) Views by whole rows and
+  // shuffles, (point, 3) component by component: every lane must hold its point's
+  // component, a store must write the kLanes points' rows and nothing around them, and the
+  // Real forms must do the same for one point.
+  Kokkos::View<Real* [4], MemSpace> quad("quad", 9);
+  Kokkos::View<Real* [2], MemSpace> pair("pair", 9);
+  Kokkos::View<Real* [3], MemSpace> triple("triple", 9);
+  const auto fill = [&] {
+    for (int p = 0; p < 9; ++p)
+      for (int c = 0; c < 4; ++c) {
+        quad(p, c) = 100 * p + c;
+        if (c < 2) pair(p, c) = 100 * p + c;
+        if (c < 3) triple(p, c) = 100 * p + c;
+      }
+  };
+  fill();
+  const auto check = [](const auto& view, const auto& lanes, int first, int count) {
+    for (int c = 0; c < count; ++c)
+      for (int l = 0; l < kLanes; ++l) EXPECT_EQ(lanes[c][l], view(first + l, c)) << c << " " << l;
+  };
+  for (int first : {0, 3, 5}) {
+    Lanes q[4], d[2], t[3];
+    loadComponents(quad, first, q);
+    loadComponents(pair, first, d);
+    loadComponents(triple, first, t);
+    check(quad, q, first, 4);
+    check(pair, d, first, 2);
+    check(triple, t, first, 3);
+    Real one[4];
+    loadComponents(quad, first, one);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(one[c], quad(first, c));
+  }
+  for (int first : {1, 4}) {
+    fill();
+    Lanes q[4], d[2], t[3];
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < kLanes; ++l) q[c][l] = -(10 * l + c + 1);
+    for (int c = 0; c < 2; ++c) d[c] = q[c];
+    for (int c = 0; c < 3; ++c) t[c] = q[c];
+    storeComponents(quad, first, q);
+    storeComponents(pair, first, d);
+    storeComponents(triple, first, t);
+    for (int p = 0; p < 9; ++p) {
+      const bool written = p >= first && p < first + kLanes;
+      for (int c = 0; c < 4; ++c) {
+        const Real expected = written ? -(10 * (p - first) + c + 1) : 100 * p + c;
+        EXPECT_EQ(quad(p, c), expected) << p << " " << c;
+        if (c < 2) {
+          EXPECT_EQ(pair(p, c), expected) << p << " " << c;
+        }
+        if (c < 3) {
+          EXPECT_EQ(triple(p, c), expected) << p << " " << c;
+        }
+      }
+    }
+    const Real one[2] = {-1, -2}, before = pair(7, 1);
+    storeComponents(pair, 8, one);
+    EXPECT_EQ(pair(8, 0), -1.0);
+    EXPECT_EQ(pair(8, 1), -2.0);
+    EXPECT_EQ(pair(7, 1), before);
+  }
+}
+
 }  // namespace
 }  // namespace argine

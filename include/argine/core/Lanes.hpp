@@ -76,7 +76,7 @@ KOKKOS_INLINE_FUNCTION bool anyLane(LaneMask condition) {
 
 /// out[l] = (in[0][l], in[1][l], in[2][l], in[3][l]): four values of kLanes points turned into
 /// the four values of each point (a 4 x 4 transpose, eight shuffles).
-KOKKOS_INLINE_FUNCTION void transposeLanes(const Lanes in[kLanes], Lanes out[kLanes]) {
+KOKKOS_FORCEINLINE_FUNCTION void transposeLanes(const Lanes in[kLanes], Lanes out[kLanes]) {
   const Lanes low01 = __builtin_shufflevector(in[0], in[1], 0, 4, 2, 6);
   const Lanes high01 = __builtin_shufflevector(in[0], in[1], 1, 5, 3, 7);
   const Lanes low23 = __builtin_shufflevector(in[2], in[3], 0, 4, 2, 6);
@@ -139,6 +139,47 @@ KOKKOS_INLINE_FUNCTION void store(const View& view, int p, int c, Real value) {
 template <class View>
 KOKKOS_INLINE_FUNCTION void store(const View& view, int p, int c, Lanes value) {
   for (int l = 0; l < kLanes; ++l) view(p + l, c) = value[l];
+}
+
+/// All components of a (point, component) View at point p (Real), or at points p .. p +
+/// kLanes - 1 (Lanes): out[c] = load<T>(view, p, c) for every c. Where the kLanes points'
+/// values are contiguous (LayoutRight, 2 or 4 components), a few vector loads and shuffles
+/// instead of a scalar load and an insert per value.
+template <class T, class View>
+KOKKOS_FORCEINLINE_FUNCTION void loadComponents(const View& view, int p, T out[]) {
+  constexpr int kComponents = static_cast<int>(View::static_extent(1));
+  if constexpr (std::is_same_v<T, Lanes> &&
+                std::is_same_v<typename View::array_layout, Kokkos::LayoutRight> &&
+                kComponents == kLanes) {
+    Lanes rows[kLanes];  // rows[l] = the components of point p + l
+    std::memcpy(rows, &view(p, 0), sizeof rows);
+    transposeLanes(rows, out);
+  } else {
+    for (int c = 0; c < kComponents; ++c) out[c] = load<T>(view, p, c);
+  }
+}
+
+/// Writes what loadComponents() reads.
+template <class T, class View>
+KOKKOS_FORCEINLINE_FUNCTION void storeComponents(const View& view, int p, const T in[]) {
+  constexpr int kComponents = static_cast<int>(View::static_extent(1));
+  if constexpr (std::is_same_v<T, Lanes> &&
+                std::is_same_v<typename View::array_layout, Kokkos::LayoutRight> &&
+                kComponents == kLanes) {
+    Lanes rows[kLanes];
+    transposeLanes(in, rows);
+    std::memcpy(&view(p, 0), rows, sizeof rows);
+  } else if constexpr (std::is_same_v<T, Lanes> &&
+                       std::is_same_v<typename View::array_layout, Kokkos::LayoutRight> &&
+                       kComponents == 2 && kLanes == 4) {
+    // (x, y) pairs of the four points: two shuffles, two vector stores.
+    const Lanes low = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);
+    const Lanes high = __builtin_shufflevector(in[0], in[1], 2, 6, 3, 7);
+    std::memcpy(&view(p, 0), &low, sizeof low);
+    std::memcpy(&view(p + 2, 0), &high, sizeof high);
+  } else {
+    for (int c = 0; c < kComponents; ++c) store(view, p, c, in[c]);
+  }
 }
 
 }  // namespace argine

@@ -31,9 +31,9 @@ struct PointUpdateViews {
 /// (1 - n) rho_S V is kept exactly. T = Real: point p; Lanes: points p .. p + kLanes - 1.
 template <class T = Real>
 KOKKOS_INLINE_FUNCTION void updatePorosityAndVolume(const PointUpdateViews& v, int p) {
-  const auto& increment = v.rates.strain_increment_p;
-  const T volumetric =
-      load<T>(increment, p, XX) + load<T>(increment, p, YY) + load<T>(increment, p, ZZ);
+  T increment[kStressComponents];
+  loadComponents(v.rates.strain_increment_p, p, increment);
+  const T volumetric = increment[XX] + increment[YY] + increment[ZZ];
   const T ratio = 1 + volumetric;  // V^{k+1} / V^k
   store(v.points.volume, p, load<T>(v.points.volume, p) * ratio);
   store(v.points.porosity, p, 1 - (1 - load<T>(v.points.porosity, p)) / ratio);
@@ -91,9 +91,9 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v,
     for (int l = 0; l < kLanes; ++l) updateLiquidPressure(v, p + l);
     return;
   }
-  const auto& increment = v.rates.strain_increment_p;
-  const Lanes volumetric =
-      load<Lanes>(increment, p, XX) + load<Lanes>(increment, p, YY) + load<Lanes>(increment, p, ZZ);
+  Lanes increment[kStressComponents];
+  loadComponents(v.rates.strain_increment_p, p, increment);
+  const Lanes volumetric = increment[XX] + increment[YY] + increment[ZZ];
   const Lanes volume = load<Lanes>(v.points.volume, p);
   const Lanes old_volume = volume / (1 + volumetric);
   const Lanes mass = liquidMassAfterFlux(
@@ -158,11 +158,16 @@ KOKKOS_INLINE_FUNCTION void updateLiquidState(const PointUpdateViews& v, int p) 
 /// Lanes: points p .. p + kLanes - 1.
 template <class T = Real>
 KOKKOS_INLINE_FUNCTION void updatePointPosition(const PointUpdateViews& v, int p) {
+  T increment[kDim], position[kDim], displacement[kDim];
+  loadComponents(v.rates.displacement_increment_p, p, increment);
+  loadComponents(v.points.position, p, position);
+  loadComponents(v.points.displacement, p, displacement);
   for (int d = 0; d < kDim; ++d) {
-    const T increment = load<T>(v.rates.displacement_increment_p, p, d);
-    store(v.points.position, p, d, load<T>(v.points.position, p, d) + increment);
-    store(v.points.displacement, p, d, load<T>(v.points.displacement, p, d) + increment);
+    position[d] = position[d] + increment[d];
+    displacement[d] = displacement[d] + increment[d];
   }
+  storeComponents(v.points.position, p, position);
+  storeComponents(v.points.displacement, p, displacement);
 }
 
 /// Whether updateEffectiveStressLanes covers the material's solid model (those whose update
@@ -180,11 +185,10 @@ KOKKOS_INLINE_FUNCTION bool hasLaneStressUpdate(const PointMaterial& material) {
 KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v, int p,
                                                        const PointMaterial& material) {
   Lanes dstrain[kStressComponents], stress[kStressComponents], strain[kStressComponents];
-  for (int c = 0; c < kStressComponents; ++c) {
-    dstrain[c] = load<Lanes>(v.rates.strain_increment_p, p, c);
-    stress[c] = load<Lanes>(v.points.stress_effective, p, c);
-    strain[c] = load<Lanes>(v.points.strain, p, c) + dstrain[c];
-  }
+  loadComponents(v.rates.strain_increment_p, p, dstrain);
+  loadComponents(v.points.stress_effective, p, stress);
+  loadComponents(v.points.strain, p, strain);
+  for (int c = 0; c < kStressComponents; ++c) strain[c] = strain[c] + dstrain[c];
   rotateStressBySpin(load<Lanes>(v.rates.spin_increment_p, p), stress);
   const SolidConstants& constants = material.solid_constants;
   Lanes dstress[kStressComponents];
@@ -199,10 +203,8 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v
   }
   const Lanes deviatoric = equivalentDeviatoricStrain(strain);
   if (!anyLane(outside)) {  // the common case: elastic in every lane
-    for (int c = 0; c < kStressComponents; ++c) {
-      store(v.points.stress_effective, p, c, stress[c]);
-      store(v.points.strain, p, c, strain[c]);
-    }
+    storeComponents(v.points.stress_effective, p, stress);
+    storeComponents(v.points.strain, p, strain);
     store(v.points.deviatoric_strain, p, deviatoric);
     for (int l = 0; l < kLanes; ++l) v.points.plastic_state(p + l) = kPlasticStateElastic;
     return;

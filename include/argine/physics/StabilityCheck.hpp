@@ -34,8 +34,9 @@ KOKKOS_INLINE_FUNCTION auto pointStateIsValid(const MaterialPoints& pts, int p) 
   auto ok = both(volume > 0,
                  both(kmath::isFinite(volume), kmath::isFinite(load<T>(pts.pressure_liquid, p))));
   for (int d = 0; d < kDim; ++d) ok = both(ok, kmath::isFinite(load<T>(pts.position, p, d)));
-  for (int c = 0; c < kStressComponents; ++c)
-    ok = both(ok, kmath::isFinite(load<T>(pts.stress_effective, p, c)));
+  T stress[kStressComponents];
+  loadComponents(pts.stress_effective, p, stress);
+  for (int c = 0; c < kStressComponents; ++c) ok = both(ok, kmath::isFinite(stress[c]));
   return ok;
 }
 
