@@ -2,6 +2,8 @@
 
 #include <limits>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
@@ -45,7 +47,7 @@ namespace {
 
 /// The criteria's inputs of every point as arrays (CriterionGathered in the header), so that
 /// each criterion is one loop over contiguous values without branches that GCC evaluates
-/// for two points per instruction (SSE2; doc/scaling.md).
+/// for several points per instruction (doc/scaling.md).
 struct CriterionArrays {
   MaterialPoints points;
   Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p;
@@ -67,24 +69,38 @@ struct CriterionArrays {
   }
 };
 
-/// step_pc(p, slot) = criterion kKind at every point (also where it does not apply: the
-/// minimum skips those).
+/// kGatheredHeldTo values: which criteria hold a point.
+constexpr Real kHeldToNone = 0;     ///< outside the mesh: none
+constexpr Real kHeldToLiquid = 1;   ///< liquid-carrying: the stage's criteria
+constexpr Real kHeldToDryCfl = -1;  ///< dry: the dry CFL criterion (the header)
+
+/// No limiting criterion leaves this (the identity of Kokkos' MinLoc) in place.
+constexpr Real kUnlimited = std::numeric_limits<Real>::max();
+
+/// limit_p(p) = min(limit_p(p), criterion kKind at p) where limit_p(p) is not NaN: a point
+/// the stage's criteria do not hold starts from NaN (critical_time_step_inputs), which no
+/// step is smaller than. One array written, so that GCC's run-time alias checks stay within
+/// its limit and the loop is vectorised.
 template <CriterionKind kKind>
-void evaluateCriterion(const CriterionArrays& arrays, int slot, int count,
-                       Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc) {
+void lowerLimitByCriterion(const CriterionArrays& arrays, int count,
+                           Kokkos::View<Real*, MemSpace> limit_p) {
   // An int index like the lambda's: with Kokkos' default (64-bit) index the narrowing to
   // int keeps GCC from vectorising the loop.
   Kokkos::parallel_for(
       "critical_time_step", Kokkos::RangePolicy<ExecSpace, Kokkos::IndexType<int>>(0, count),
-      KOKKOS_LAMBDA(const int p) { step_pc(p, slot) = criticalStep(kKind, arrays.input(p)); });
+      KOKKOS_LAMBDA(const int p) {
+        const Real dt = criticalStep(kKind, arrays.input(p));
+        const Real limit = limit_p(p);
+        limit_p(p) = dt < limit ? dt : limit;
+      });
 }
 
-void evaluateCriterion(CriterionKind kind, const CriterionArrays& arrays, int slot, int count,
-                       Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc) {
+void lowerLimitByCriterion(CriterionKind kind, const CriterionArrays& arrays, int count,
+                           Kokkos::View<Real*, MemSpace> limit_p) {
   switch (kind) {
 #define ARGINE_CRITERION_CASE(K) \
   case CriterionKind::K:         \
-    return evaluateCriterion<CriterionKind::K>(arrays, slot, count, step_pc);
+    return lowerLimitByCriterion<CriterionKind::K>(arrays, count, limit_p);
     ARGINE_CRITERION_CASE(CflDry)
     ARGINE_CRITERION_CASE(CflUndrained)
     ARGINE_CRITERION_CASE(Consolidation)
@@ -98,32 +114,65 @@ void evaluateCriterion(CriterionKind kind, const CriterionArrays& arrays, int sl
   }
 }
 
+/// limit_p(p) = the dry CFL criterion (4.62) at every dry point (the header); the others keep
+/// theirs.
+void limitDryPoints(const CriterionArrays& arrays, int count,
+                    Kokkos::View<Real*, MemSpace> limit_p) {
+  Kokkos::parallel_for(
+      "critical_time_step_dry", Kokkos::RangePolicy<ExecSpace, Kokkos::IndexType<int>>(0, count),
+      KOKKOS_LAMBDA(const int p) {
+        const Real dt = criticalStep(CriterionKind::CflDry, arrays.input(p));
+        const bool dry = arrays.gathered_p(p, kGatheredHeldTo) == kHeldToDryCfl;
+        limit_p(p) = dry && dt < kUnlimited ? dt : limit_p(p);
+      });
+}
+
+/// Criterion `kind` at point `point` alone (the same function as the passes, so the same
+/// bits).
+Real criticalStepAt(CriterionKind kind, const CriterionArrays& arrays, int point) {
+  Real dt = 0;
+  Kokkos::parallel_reduce(
+      "critical_time_step_at", Kokkos::RangePolicy<ExecSpace>(point, point + 1),
+      KOKKOS_LAMBDA(const int p, Real& out) { out = criticalStep(kind, arrays.input(p)); }, dt);
+  return dt;
+}
+
+/// The criterion that gave point `point` its step `limit`: the dry CFL criterion at a dry
+/// point, else the first of the stage's criteria, in their order, whose step there equals
+/// it (as the passes keep the first of equal steps: only a strictly smaller one replaces a
+/// limit).
+CriterionKind governingCriterion(const std::vector<CriterionKind>& criteria,
+                                 const CriterionArrays& arrays, int point, Real limit) {
+  Real held_to = kHeldToNone;
+  Kokkos::deep_copy(held_to, Kokkos::subview(arrays.gathered_p, point, int(kGatheredHeldTo)));
+  if (held_to == kHeldToDryCfl) return CriterionKind::CflDry;
+  for (const CriterionKind kind : criteria)
+    if (criticalStepAt(kind, arrays, point) == limit) return kind;
+  throw std::logic_error("TimeStepControl: no criterion gives the point's critical step");
+}
+
 }  // namespace
 
 TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                                          const MaterialTable& table) const {
   const auto materials_m = table.materials();
   const auto element_size = element_size_;
-  const int count = static_cast<int>(criteria_.size());
-  const int slots = count + 1;            // slot `count` = dry CFL of a dry point
   bool any_dry = false, any_wet = false;  // the passes no point takes are skipped
   for (int m = 0; m < table.count(); ++m) {
     any_dry = any_dry || !carriesLiquid(table.host(m).phase);
     any_wet = any_wet || carriesLiquid(table.host(m).phase);
   }
-  if (static_cast<int>(gathered_p_.extent(0)) != points.count ||
-      static_cast<int>(step_pc_.extent(1)) != slots) {
+  if (static_cast<int>(gathered_p_.extent(0)) != points.count) {
     gathered_p_ = Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace>(
         "criterion_inputs_p", points.count);
-    step_pc_ = Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace>("critical_steps_pc", points.count,
-                                                                  slots);
+    limit_p_ = Kokkos::View<Real*, MemSpace>("critical_step_p", points.count);
   }
   const MaterialPoints pts = points;
   const auto gathered_p = gathered_p_;
-  const auto step_pc = step_pc_;
+  const auto limit_p = limit_p_;
 
   // The element size and the material's parameters of each point, so that the criteria's
-  // loops need no branch; a point with element < 0 gets size 0 (it is skipped below).
+  // loops need no branch; which criteria hold it, and where its step starts from.
   Kokkos::parallel_for(
       "critical_time_step_inputs", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -139,46 +188,38 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                 ? saturationSuctionDerivative(material.retention,
                                               suctionOfPressure(pts.pressure_liquid(p)))
                 : 0;
+        const Real held_to = e < 0                           ? kHeldToNone
+                             : carriesLiquid(material.phase) ? kHeldToLiquid
+                                                             : kHeldToDryCfl;
+        gathered_p(p, kGatheredHeldTo) = held_to;
+        limit_p(p) = held_to == kHeldToLiquid ? kUnlimited : kmath::quietNaN();
       });
   const CriterionArrays arrays{points, gathered_p, mass_scaling_};
-  for (int c = 0; c < count && any_wet; ++c)
-    evaluateCriterion(criteria_[c], arrays, c, points.count, step_pc);
-  // Dry points have no liquid: the dry CFL criterion (4.62) alone (the header).
-  if (any_dry) evaluateCriterion(CriterionKind::CflDry, arrays, count, points.count, step_pc);
+  if (any_wet)
+    for (const CriterionKind kind : criteria_)
+      lowerLimitByCriterion(kind, arrays, points.count, limit_p);
+  if (any_dry) limitDryPoints(arrays, points.count, limit_p);
 
-  // The minimum over the points in order and, per point, over its criteria in order (the
-  // first of equal ones).
-  using Reducer = Kokkos::MinLoc<Real, long>;
+  // The minimum over the points in order (the first of equal ones; NaN is never smaller).
+  using Reducer = Kokkos::MinLoc<Real, int>;
   Reducer::value_type best;
   Kokkos::parallel_reduce(
       "critical_time_step_minimum", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, Reducer::value_type& min) {
-        if (pts.element(p) < 0) return;
-        const bool wet = carriesLiquid(materials_m(pts.material(p)).phase);
-        const int first = wet ? 0 : count, last = wet ? count : count + 1;
-        for (int c = first; c < last; ++c) {
-          const Real dt = step_pc(p, c);
-          if (dt < min.val) {
-            min.val = dt;
-            min.loc = static_cast<long>(p) * slots + c;
-          }
+        if (limit_p(p) < min.val) {
+          min.val = limit_p(p);
+          min.loc = p;
         }
       },
       Reducer(best));
 
   TimeStepChoice choice;
   choice.automatic = true;
-  // No limiting point leaves the reducer's identity (the largest Real) in place.
-  const bool limited = best.val < std::numeric_limits<Real>::max() && best.loc >= 0;
+  const bool limited = best.val < kUnlimited && best.loc >= 0;
   choice.critical_step = limited ? best.val : kmath::infinity();
   if (!limited) return choice;
-  const int point = static_cast<int>(best.loc / slots);
-  const int slot = static_cast<int>(best.loc % slots);
-  if (slot == count) {
-    choice.governing = CriterionKind::CflDry;
-  } else {
-    choice.governing = criteria_[slot];
-  }
+  const int point = best.loc;
+  choice.governing = governingCriterion(criteria_, arrays, point, best.val);
   choice.point = point;
   auto id = Kokkos::create_mirror_view_and_copy(
       Kokkos::HostSpace(), Kokkos::subview(points.id, std::make_pair(point, point + 1)));

@@ -125,6 +125,29 @@ TEST(TimeStepControl, ChoosesTheFirstSmallestStepOverPointsAndCriteria) {
   EXPECT_EQ(choice.governing, CriterionKind::CflDry);
   EXPECT_EQ(choice.point, expected.point);
   EXPECT_EQ(choice.critical_step, expected.step);
+
+  // Only saturated points: the two Mieremet criteria give equal steps (S_L = 1), and the
+  // one listed first governs.
+  for (int p = 0; p < points.count; ++p) {
+    element(p) = 0;
+    material(p) = 1;
+    s(p) = 1;
+  }
+  Kokkos::deep_copy(points.element, element);
+  Kokkos::deep_copy(points.material, material);
+  Kokkos::deep_copy(points.saturation, s);
+  for (const CriterionKind first : {CriterionKind::Mieremet, CriterionKind::MieremetLiquidDrag}) {
+    const CriterionKind second = first == CriterionKind::Mieremet
+                                     ? CriterionKind::MieremetLiquidDrag
+                                     : CriterionKind::Mieremet;
+    spec.criteria = {first, second};
+    control.configure(spec, 1, "s");
+    const TimeStepChoice tie = control.evaluate(points, table);
+    const Expected expected_tie = smallestStep(points, table, column.mesh, spec.criteria, 1);
+    EXPECT_EQ(tie.critical_step, expected_tie.step);
+    EXPECT_EQ(tie.point, expected_tie.point);
+    EXPECT_EQ(tie.governing, first);
+  }
 }
 
 }  // namespace

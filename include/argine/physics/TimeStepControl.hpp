@@ -19,13 +19,16 @@ namespace argine {
 class MaterialTable;
 
 /// Columns of TimeStepControl's per-point scratch: the criteria's inputs that are not point
-/// fields (the element's size, the material's parameters, dS_L/ds).
+/// fields (the element's size, the material's parameters, dS_L/ds), and which criteria hold
+/// the point (none outside the mesh, the dry CFL criterion at a dry point, the stage's at
+/// the others).
 enum CriterionGathered : int {
   kGatheredElementSize = 0,
   kGatheredSolidDensity,
   kGatheredBulkModulus,
   kGatheredConstrainedModulus,
   kGatheredSaturationSlope,
+  kGatheredHeldTo,
   kCriterionGathered
 };
 struct MaterialPoints;
@@ -105,9 +108,10 @@ class TimeStepControl {
 
   Kokkos::View<Real*, MemSpace> element_size_;
   std::vector<CriterionKind> criteria_;  ///< the stage's, in order (slots 0, 1, ...)
-  // evaluate()'s scratch: the gathered inputs and each criterion's step, per point.
+  // evaluate()'s scratch, per point: the gathered inputs, the smallest critical step of the
+  // criteria evaluated so far.
   mutable Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p_;
-  mutable Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> step_pc_;
+  mutable Kokkos::View<Real*, MemSpace> limit_p_;
   bool automatic_ = true;
   Real fixed_step_ = 0;
   Real safety_factor_ = 0.5;
