@@ -1,8 +1,11 @@
-// kmath::fmin and fmax (written out for speed) against the C99 rules they replace.
+// kmath::fmin and fmax (written out for speed) against the C99 rules they replace, and
+// kmath::logNearOne against the library's log and a long double reference.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
 
 #include "argine/materials/KernelMath.hpp"
 
@@ -37,6 +40,56 @@ TEST(KernelMath, FminFmaxAgreeWithTheLibrary) {
       EXPECT_EQ(kmath::fmax(x, y), std::fmax(x, y)) << x << " " << y;
       EXPECT_EQ(kmath::fmin(x, y), std::fmin(x, y)) << x << " " << y;
     }
+}
+
+/// |a - b| in units in the last place of b.
+Real ulpsApart(Real a, long double b) {
+  const Real rounded = static_cast<Real>(b);
+  const Real ulp = std::nextafter(std::fabs(rounded), std::numeric_limits<Real>::infinity()) -
+                   std::fabs(rounded);
+  return static_cast<Real>(std::fabs(static_cast<long double>(a) - b) / ulp);
+}
+
+TEST(KernelMath, LogNearOneIsWithinOneUlpOnItsIntervalAndTheLibraryLogOutside) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<Real> interval(std::sqrt(0.5), std::sqrt(2.0));
+  Real worst = 0, worst_library = 0;
+  int differ = 0, samples = 0;
+  const auto check = [&](Real x) {
+    const Real ours = kmath::logNearOne(x), library = std::log(x);
+    const long double reference = std::log(static_cast<long double>(x));
+    worst = std::max(worst, ulpsApart(ours, reference));
+    worst_library = std::max(worst_library, ulpsApart(library, reference));
+    differ += ours != library;
+    ++samples;
+  };
+  for (int i = 0; i < 200000; ++i) check(interval(random));
+  for (int k = 2; k <= 50; k += 4) {  // ln x ~ x - 1 down to 2^-50 from 1
+    std::uniform_real_distribution<Real> near(-std::ldexp(1.0, -k), std::ldexp(1.0, -k));
+    for (int i = 0; i < 20000; ++i) check(1 + near(random));
+  }
+  EXPECT_LE(worst, 1.0) << "library: " << worst_library;
+  EXPECT_LT(differ, samples / 10);  // mostly the library's bits; never more than 1 ulp off
+  EXPECT_EQ(kmath::logNearOne(1.0), 0.0);
+  // Outside [sqrt(1/2), sqrt(2)] the library's log itself.
+  for (Real x : {0.5, 0.7, 1.5, 2.0, 1e-300, 1e300, 0.0}) {
+    const Real ours = kmath::logNearOne(x), library = std::log(x);
+    EXPECT_EQ(std::memcmp(&ours, &library, sizeof ours), 0) << x;
+  }
+  EXPECT_TRUE(std::isnan(kmath::logNearOne(-1.0)));
+  EXPECT_TRUE(std::isnan(kmath::logNearOne(std::nan(""))));
+}
+
+TEST(KernelMath, LogNearOneGivesEachLaneTheOneValueBits) {
+  const Lanes inside = {1.0 + 1e-9, 0.8, 1.3, 1.0 - 3e-5};
+  const Lanes mixed = {1.0 + 4.5e-5, 3.0, 0.75, -2.0};  // two lanes outside: library calls
+  for (const Lanes& x : {inside, mixed}) {
+    const Lanes lanes = kmath::logNearOne(x);
+    for (int l = 0; l < kLanes; ++l) {
+      const Real one = kmath::logNearOne(x[l]);
+      EXPECT_EQ(std::memcmp(&one, &lanes[l], sizeof one), 0) << l;
+    }
+  }
 }
 
 }  // namespace

@@ -47,6 +47,42 @@ KOKKOS_INLINE_FUNCTION Lanes log(Lanes x) {
   for (int l = 0; l < kLanes; ++l) out[l] = Kokkos::Experimental::log(x[l]);
   return out;
 }
+/// ln x within 1 ulp, with one formula for Real and Lanes: for x in [sqrt(2)/2, sqrt(2)] the
+/// k = 0 case of fdlibm's e_log.c (Sun Microsystems 1993, "freely granted"): with f = x - 1,
+/// s = f / (2 + f), ln x = f - (f^2/2 - s (f^2/2 + R(s^2))), R the Remez polynomial Lg1..Lg7
+/// (error below 2^-58.45 on that interval); elsewhere the library's log. kLanes values in
+/// the interval take no call at all, where the library's log is a call per value (with the
+/// vector registers saved around each); each lane gets the bits of the one-value form. For
+/// the saturated liquid pressure K_L ln(rho_L / rho_L0), whose ratio stays within a few per
+/// cent of 1.
+template <class T>
+KOKKOS_INLINE_FUNCTION T logNearOne(T x) {
+  constexpr Real kLg1 = 6.666666666666735130e-01;  // 3FE55555 55555593
+  constexpr Real kLg2 = 3.999999999940941908e-01;  // 3FD99999 9997FA04
+  constexpr Real kLg3 = 2.857142874366239149e-01;  // 3FD24924 94229359
+  constexpr Real kLg4 = 2.222219843214978396e-01;  // 3FCC71C5 1D8E78AF
+  constexpr Real kLg5 = 1.818357216161805012e-01;  // 3FC74664 96CB03DE
+  constexpr Real kLg6 = 1.531383769920937332e-01;  // 3FC39A09 D078C69F
+  constexpr Real kLg7 = 1.479819860511658591e-01;  // 3FC2F112 DF3E5244
+  constexpr Real kLow = 0.70710678118654752440, kHigh = 1.41421356237309504880;
+  const T f = x - 1;
+  const T s = f / (2 + f);
+  const T z = s * s, w = z * z;
+  const T t1 = w * (kLg2 + w * (kLg4 + w * kLg6));
+  const T t2 = z * (kLg1 + w * (kLg3 + w * (kLg5 + w * kLg7)));
+  const T half_square = Real(0.5) * f * f;
+  const T near = f - (half_square - s * (half_square + (t2 + t1)));
+  const auto inside = both(x >= kLow, x <= kHigh);
+  if constexpr (std::is_same_v<T, Real>) {
+    return inside ? near : log(x);
+  } else {
+    if (!anyLane(~inside)) return near;
+    T out;
+    for (int l = 0; l < kLanes; ++l) out[l] = inside[l] ? near[l] : log(x[l]);
+    return out;
+  }
+}
+
 KOKKOS_INLINE_FUNCTION Lanes fabs(Lanes x) {
   Lanes out;
   for (int l = 0; l < kLanes; ++l) out[l] = __builtin_fabs(x[l]);

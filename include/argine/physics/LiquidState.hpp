@@ -107,9 +107,9 @@ template <class T>
 KOKKOS_INLINE_FUNCTION T saturatedPressureOfContent(const LiquidSpec& liquid, T content) {
   if constexpr (std::is_same_v<T, Real>) {
     if (!(content > 0)) return kmath::quietNaN();
-    return liquid.bulk_modulus * kmath::log(content / liquid.density);
+    return liquid.bulk_modulus * kmath::logNearOne(content / liquid.density);
   } else {
-    return select(content > 0, liquid.bulk_modulus * kmath::log(content / liquid.density),
+    return select(content > 0, liquid.bulk_modulus * kmath::logNearOne(content / liquid.density),
                   splat<T>(kmath::quietNaN()));
   }
 }
