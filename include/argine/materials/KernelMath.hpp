@@ -41,12 +41,6 @@ KOKKOS_INLINE_FUNCTION Lanes sqrt(Lanes x) {
   for (int l = 0; l < kLanes; ++l) out[l] = __builtin_sqrt(x[l]);
   return out;
 }
-/// The library logarithm of each lane, one call per lane (so the same bits as the scalar one).
-KOKKOS_INLINE_FUNCTION Lanes log(Lanes x) {
-  Lanes out;
-  for (int l = 0; l < kLanes; ++l) out[l] = Kokkos::Experimental::log(x[l]);
-  return out;
-}
 /// ln x within 1 ulp, with one formula for Real and Lanes: for x in [sqrt(2)/2, sqrt(2)] the
 /// k = 0 case of fdlibm's e_log.c (Sun Microsystems 1993, "freely granted"): with f = x - 1,
 /// s = f / (2 + f), ln x = f - (f^2/2 - s (f^2/2 + R(s^2))), R the Remez polynomial Lg1..Lg7
