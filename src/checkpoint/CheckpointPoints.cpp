@@ -5,38 +5,11 @@
 #include "argine/checkpoint/CheckpointFile.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/points/PointFields.hpp"
 
 namespace argine {
 
 namespace {
-
-// Every field of MaterialPoints, with its record name. Keep in step with MaterialPoints.hpp.
-template <class Points, class Visit>
-void forEachPointField(Points& p, Visit&& visit) {
-  visit("id", p.id);
-  visit("element", p.element);
-  visit("local", p.local);
-  visit("position", p.position);
-  visit("initial_position", p.initial_position);
-  visit("material", p.material);
-  visit("displacement", p.displacement);
-  visit("velocity_solid", p.velocity_solid);
-  visit("velocity_liquid", p.velocity_liquid);
-  visit("volume", p.volume);
-  visit("initial_volume", p.initial_volume);
-  visit("mass_solid", p.mass_solid);
-  visit("mass_liquid", p.mass_liquid);
-  visit("porosity", p.porosity);
-  visit("pressure_liquid", p.pressure_liquid);
-  visit("density_liquid", p.density_liquid);
-  visit("saturation", p.saturation);
-  visit("conductivity", p.conductivity);
-  visit("stress_effective", p.stress_effective);
-  visit("strain", p.strain);
-  visit("deviatoric_strain", p.deviatoric_strain);
-  visit("plastic_strain", p.plastic_strain);
-  visit("plastic_state", p.plastic_state);
-}
 
 template <class ViewType>
 std::uint64_t columnsOf(const ViewType& view) {

@@ -6,6 +6,7 @@
 #include "ValueText.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
+#include "argine/input/DeckWords.hpp"
 
 namespace argine {
 
@@ -67,6 +68,14 @@ void checkOneMaterialPerBlock(const Deck& deck) {
 }
 
 void checkMeshSpec(const MeshSpec& mesh) {
+  const bool structured = mesh.generate && mesh.generator.kind == GeneratorSpec::Kind::Rectangle &&
+                          mesh.generator.element == ElementType::Quad4;
+  if (mesh.shape_functions != ShapeFamily::Linear && !structured)
+    throw InputError("Mesh/Shape Functions",
+                     std::string(deckWord(kShapeFamilyWords, mesh.shape_functions)) +
+                         " shape functions need a structured Quad4 grid (Mesh/Generate with "
+                         "Type: rectangle and Element: quad4); use linear with " +
+                         (mesh.generate ? "this generator" : "an Exodus mesh"));
   if (!mesh.generate) return;
   const GeneratorSpec& generator = mesh.generator;
   const char* axes[] = {"x", "y"};

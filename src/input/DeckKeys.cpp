@@ -52,6 +52,12 @@ ListSchema meshKeys() {
   mesh.add(KeySpec::file("Exodus File", "Exodus II background mesh (relative to the deck)"));
   mesh.add(KeySpec::sublist("Generate", generatorKeys(), "built-in mesh generator"));
   mesh.exactlyOneOf({"Exodus File", "Generate"});
+  mesh.add(KeySpec::choice("Shape Functions", deckWords(kShapeFamilyWords),
+                           "shape functions of the particle-grid transfers: linear (the "
+                           "element's own, the thesis), uGIMP or quadratic B-spline (both "
+                           "need a structured Quad4 grid, Generate/Type rectangle; they "
+                           "remove the cell-crossing noise of linear shapes, doc/theory.md)")
+               .byDefault(std::string("linear")));
   return mesh;
 }
 
@@ -570,20 +576,30 @@ ListSchema stageKeys() {
                 .byDefault(0.0));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
+  stage.add(KeySpec::choice("Velocity Transfer", deckWords(kTransferSchemeWords),
+                            "FLIP: v_p += dt sum N a_i (the thesis, 7.10-7.11), optionally "
+                            "blended with PIC; APIC: affine particle-in-cell (Jiang et al. "
+                            "2015), v_p and an affine velocity matrix C_p from the grid for both "
+                            "phases, conserving angular momentum and leaving no point velocity "
+                            "the grid cannot see (doc/theory.md Sec. 4)")
+                .byDefault(std::string("FLIP"))
+                .when("Solver", {"explicit", "quasi-static", "fixed skeleton"}));
   stage.add(KeySpec::real("Solid PIC Fraction", "-",
                           "share of the PIC update in the solid point velocities, per step; "
                           "0: FLIP (the thesis); removes point-scale velocity noise in "
                           "about dt / fraction")
                 .atLeast(0)
                 .atMost(1)
-                .byDefault(0.0));
+                .byDefault(0.0)
+                .when("Velocity Transfer", {"FLIP"}));
   stage.add(KeySpec::real("Liquid PIC Fraction", "-",
                           "share per step of the grid's relative velocity v_L - v_S in the "
                           "liquid point velocities (PIC for the Darcy part); 0: FLIP (the "
                           "thesis); keep 0 with mass scaling (doc/theory.md Sec. 3.6)")
                 .atLeast(0)
                 .atMost(1)
-                .byDefault(0.0));
+                .byDefault(0.0)
+                .when("Velocity Transfer", {"FLIP"}));
   stage.add(KeySpec::choice("Liquid Pressure", Words{"free", "held"},
                             "free: the liquid flows and p_L follows the mass balance; held: "
                             "p_L and S_L stay as the stage finds them and the liquid moves "

@@ -323,6 +323,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
 
 MeshSpec parseMesh(const DeckSection& mesh) {
   MeshSpec spec;
+  spec.shape_functions = deckValue(kShapeFamilyWords, mesh.word("Shape Functions"));
   if (mesh.has("Exodus File")) {
     spec.exodus_file = mesh.file("Exodus File");
     return spec;
@@ -374,6 +375,7 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.gravity = stage.real("Gravity (m/s2)");
   spec.local_damping = stage.real("Local Damping");
   spec.mass_scaling = stage.real("Mass Scaling");
+  spec.transfer = deckValue(kTransferSchemeWords, stage.word("Velocity Transfer"));
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.hold_liquid_pressure =

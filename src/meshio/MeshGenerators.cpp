@@ -157,6 +157,14 @@ Mesh generateRectangle(const GeneratorSpec& spec) {
   Mesh mesh = assembleMesh(spec.element, points, elements, std::vector<int>(elements.size(), 0),
                            {spec.block});
   addBoxSideSets(mesh, lo, hi);
+  if (!triangles) {  // the numbering above: node (i, j) = i + j (nx + 1)
+    mesh.structured.cells[0] = nx;
+    mesh.structured.cells[1] = ny;
+    for (int d = 0; d < kDim; ++d) {
+      mesh.structured.origin[d] = lo[d];
+      mesh.structured.spacing[d] = (hi[d] - lo[d]) / mesh.structured.cells[d];
+    }
+  }
   return mesh;
 }
 

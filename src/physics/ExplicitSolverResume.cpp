@@ -43,7 +43,7 @@ void ExplicitTwoPhaseSolver::resume(const ResumeState& state) {
     evaluatePointShapes(mesh_, points_, shapes_);
   else
     relocateAndEvaluateShapes(mesh_, locator_, element_maps_, points_, shapes_);
-  nodes_next_.rebuild(mesh_, points_, alwaysActiveNodes());  // several ranks: + shared nodes
+  nodes_next_.rebuild(mesh_, points_, &shapes_, alwaysActiveNodes());  // several ranks: + shared
   nodes_next_changed_ = true;
   free_boundary_stale_ = true;  // detected again from the points' elements
 }

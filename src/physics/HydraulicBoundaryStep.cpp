@@ -15,7 +15,7 @@ namespace {
 
 namespace KE = Kokkos::Experimental;
 
-template <int kNodes, bool kCompensated>
+template <class Family, bool kCompensated>
 void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                               const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                               const Kokkos::View<const int*, MemSpace>& liquid_m,
@@ -34,11 +34,12 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   auto weight_sv = KE::create_scatter_view(fields.flux_weight_i);
   auto wet_sv = KE::create_scatter_view(fields.wet_volume_i);
   const BoundaryGradientFields hi = fields;
+  constexpr int kNodes = Family::kNodes;
   Kokkos::parallel_for(
       "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, element_p, local_p, scratch);
         if (shape.node[0] < 0) return;
         const bool wet = liquid_m(material_p(p)) != 0;
         const Real m_mixture = mass_solid_p(p) + (wet ? mass_liquid_p(p) : 0);  // 4.51
@@ -57,11 +58,15 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
                                   shape.value[a] * wet_volume);
         if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
           // the same centre value and point gradient of c as interpolateVelocityGradients
+          // (the grid families: the point's N, Family::kElementCentre)
           constexpr Real centre = Real(1) / kNodes;
+          const auto weight = [&](int a) {
+            return Family::kElementCentre ? centre : shape.value[a];
+          };
           Real c_centre = 0, grad_c[kDim] = {0, 0};
           for (int a = 0; a < kNodes; ++a) {
             const Real c = content_i(shape.node[a]);
-            c_centre += centre * c;
+            c_centre += weight(a) * c;
             grad_c[0] += c * shape.gradient[a][0];
             grad_c[1] += c * shape.gradient[a][1];
           }
@@ -69,7 +74,7 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
             for (int d = 0; d < kDim; ++d)
               addToNode<kCompensated>(
                   weight_i, hi.flux_weight_i, lo.flux_weight_i, shape.node[a], d,
-                  volume * (c_centre * shape.gradient[a][d] + centre * grad_c[d]));
+                  volume * (c_centre * shape.gradient[a][d] + weight(a) * grad_c[d]));
         } else {
           const Real m_liquid = mass_liquid_p(p);
           for (int a = 0; a < kNodes; ++a)
@@ -114,16 +119,13 @@ void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shape
                           const Kokkos::View<const int*, MemSpace>& liquid_m,
                           const GridFields& grid, BoundaryGradientFields& fields,
                           const BoundaryGradientFields* compensation) {
-  if (shapes.type == ElementType::Tri3)
-    compensation ? mapBoundaryGradientsImpl<3, true>(points, shapes, materials_m, liquid_m, grid,
-                                                     fields, *compensation)
-                 : mapBoundaryGradientsImpl<3, false>(points, shapes, materials_m, liquid_m, grid,
-                                                      fields, fields);
-  else
-    compensation ? mapBoundaryGradientsImpl<4, true>(points, shapes, materials_m, liquid_m, grid,
-                                                     fields, *compensation)
-                 : mapBoundaryGradientsImpl<4, false>(points, shapes, materials_m, liquid_m, grid,
-                                                      fields, fields);
+  withShapeFamily(shapes, [&](auto family) {
+    using Family = decltype(family);
+    compensation ? mapBoundaryGradientsImpl<Family, true>(points, shapes, materials_m, liquid_m,
+                                                          grid, fields, *compensation)
+                 : mapBoundaryGradientsImpl<Family, false>(points, shapes, materials_m, liquid_m,
+                                                           grid, fields, fields);
+  });
 }
 
 void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientFields& f,

@@ -67,86 +67,91 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
   totals.excess = excess_sum;
   if (limited == 0) return totals;
 
-  const int num_nodes = shapes.type == ElementType::Tri3 ? 3 : 4;
-  // Nodal scratch up to the highest node the points touch (only reached when limiting).
-  int max_node = 0;
-  Kokkos::parallel_reduce(
-      "outflow_limit_nodes", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
-      KOKKOS_LAMBDA(const int p, int& m) {
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
-        for (int a = 0; a < num_nodes; ++a)
-          if (shape.node[a] + 1 > m) m = shape.node[a] + 1;
-      },
-      Kokkos::Max<int>(max_node));
-  if (exchange_) max_node = nodes_;  // the exchange completes arrays of all nodes
-  if (static_cast<int>(deficit_i_.extent(0)) < max_node) {
-    deficit_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_deficit", max_node);
-    gain_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_gain", max_node);
-  } else {
-    Kokkos::deep_copy(deficit_i_, 0.0);
-    Kokkos::deep_copy(gain_i_, 0.0);
-  }
-
-  // 2. Donors: cap the outflow at the mobile content; scatter the excess and the gains.
-  auto deficit_sv = KE::create_scatter_view(deficit_i_);
-  auto gain_sv = KE::create_scatter_view(gain_i_);
-  Kokkos::parallel_for(
-      "outflow_limit_cap", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
-      KOKKOS_LAMBDA(const int p) {
-        const Real residual = residualMass(materials_m(pts.material(p)), pts, p);
-        if (residual < 0) return;
-        const Real volume = pts.volume(p);
-        const Real outflow = volume * flux_p(p);
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
-        if (outflow < 0) {
-          auto gain_i = gain_sv.access();
-          for (int a = 0; a < num_nodes; ++a) gain_i(shape.node[a]) += shape.value[a] * -outflow;
-          return;
-        }
-        const Real excess = excessOutflow(outflow, pts.mass_liquid(p), residual);
-        if (!(excess > 0)) return;
-        flux_p(p) = (outflow - excess) / volume;
-        auto deficit_i = deficit_sv.access();
-        for (int a = 0; a < num_nodes; ++a) deficit_i(shape.node[a]) += shape.value[a] * excess;
-      });
-  KE::contribute(deficit_i_, deficit_sv);
-  KE::contribute(gain_i_, gain_sv);
-  if (exchange_) exchange_->sum({nodalField(deficit_i_), nodalField(gain_i_)});
-
-  // 3. Gaining points give back, through each node, their share of the node's deficit
-  //    (at most their gain: the fraction min(1, deficit / gain) of it).
-  const auto deficit_i = deficit_i_;
-  const auto gain_i = gain_i_;
+  // Steps 2-3 on the shapes of the transfers (their family chosen once).
   Real withdrawn = 0, remaining_gain = 0;
-  Kokkos::parallel_reduce(
-      "outflow_limit_withdraw", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
-      KOKKOS_LAMBDA(const int p, Real& taken, Real& left) {
-        const Real residual = residualMass(materials_m(pts.material(p)), pts, p);
-        if (residual < 0) return;
-        const Real volume = pts.volume(p);
-        const Real gain = -volume * flux_p(p);
-        if (!(gain > 0)) return;
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, pts.element, pts.local, scratch);
-        Real back = 0;
-        for (int a = 0; a < num_nodes; ++a) {
-          const int i = shape.node[a];
-          if (gain_i(i) > 0 && deficit_i(i) > 0)
-            back += shape.value[a] * gain * kmath::fmin(Real(1), deficit_i(i) / gain_i(i));
-        }
-        flux_p(p) += back / volume;
-        taken += back;
-        left += gain - back;
-      },
-      withdrawn, remaining_gain);
-  {
-    Real sums[2] = {withdrawn, remaining_gain};
-    sumOverRanks(sums, 2);
-    withdrawn = sums[0];
-    remaining_gain = sums[1];
-  }
+  withShapeFamily(shapes, [&](auto family) {
+    using Family = decltype(family);
+    // Nodal scratch up to the highest node the points touch (only reached when limiting).
+    int max_node = 0;
+    Kokkos::parallel_reduce(
+        "outflow_limit_nodes", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
+        KOKKOS_LAMBDA(const int p, int& m) {
+          typename Family::Record scratch;
+          const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+          for (int a = 0; a < Family::kNodes; ++a)
+            if (shape.node[a] + 1 > m) m = shape.node[a] + 1;
+        },
+        Kokkos::Max<int>(max_node));
+    if (exchange_) max_node = nodes_;  // the exchange completes arrays of all nodes
+    if (static_cast<int>(deficit_i_.extent(0)) < max_node) {
+      deficit_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_deficit", max_node);
+      gain_i_ = Kokkos::View<Real*, MemSpace>("outflow_limit_gain", max_node);
+    } else {
+      Kokkos::deep_copy(deficit_i_, 0.0);
+      Kokkos::deep_copy(gain_i_, 0.0);
+    }
+
+    // 2. Donors: cap the outflow at the mobile content; scatter the excess and the gains.
+    auto deficit_sv = KE::create_scatter_view(deficit_i_);
+    auto gain_sv = KE::create_scatter_view(gain_i_);
+    Kokkos::parallel_for(
+        "outflow_limit_cap", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
+        KOKKOS_LAMBDA(const int p) {
+          const Real residual = residualMass(materials_m(pts.material(p)), pts, p);
+          if (residual < 0) return;
+          const Real volume = pts.volume(p);
+          const Real outflow = volume * flux_p(p);
+          typename Family::Record scratch;
+          const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+          if (outflow < 0) {
+            auto gain_i = gain_sv.access();
+            for (int a = 0; a < Family::kNodes; ++a)
+              gain_i(shape.node[a]) += shape.value[a] * -outflow;
+            return;
+          }
+          const Real excess = excessOutflow(outflow, pts.mass_liquid(p), residual);
+          if (!(excess > 0)) return;
+          flux_p(p) = (outflow - excess) / volume;
+          auto deficit_i = deficit_sv.access();
+          for (int a = 0; a < Family::kNodes; ++a)
+            deficit_i(shape.node[a]) += shape.value[a] * excess;
+        });
+    KE::contribute(deficit_i_, deficit_sv);
+    KE::contribute(gain_i_, gain_sv);
+    if (exchange_) exchange_->sum({nodalField(deficit_i_), nodalField(gain_i_)});
+
+    // 3. Gaining points give back, through each node, their share of the node's deficit
+    //    (at most their gain: the fraction min(1, deficit / gain) of it).
+    const auto deficit_i = deficit_i_;
+    const auto gain_i = gain_i_;
+    Kokkos::parallel_reduce(
+        "outflow_limit_withdraw", Kokkos::RangePolicy<ExecSpace>(0, pts.count),
+        KOKKOS_LAMBDA(const int p, Real& taken, Real& left) {
+          const Real residual = residualMass(materials_m(pts.material(p)), pts, p);
+          if (residual < 0) return;
+          const Real volume = pts.volume(p);
+          const Real gain = -volume * flux_p(p);
+          if (!(gain > 0)) return;
+          typename Family::Record scratch;
+          const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+          Real back = 0;
+          for (int a = 0; a < Family::kNodes; ++a) {
+            const int i = shape.node[a];
+            if (gain_i(i) > 0 && deficit_i(i) > 0)
+              back += shape.value[a] * gain * kmath::fmin(Real(1), deficit_i(i) / gain_i(i));
+          }
+          flux_p(p) += back / volume;
+          taken += back;
+          left += gain - back;
+        },
+        withdrawn, remaining_gain);
+    {
+      Real sums[2] = {withdrawn, remaining_gain};
+      sumOverRanks(sums, 2);
+      withdrawn = sums[0];
+      remaining_gain = sums[1];
+    }
+  });
 
   // 4. A rest (a donor node with no gaining neighbour, or more deficit than gain there):
   //    from all gaining points, in proportion to what they still gain.

@@ -54,12 +54,12 @@ void withChannelCount(int channels, Function&& f) {
 
 /// The averaging's element and node sums of w q and w per channel, plain or compensated;
 /// kChannels = s.channels() (0: read at run time).
-template <bool kCompensated, int kChannels>
+template <class Family, bool kCompensated, int kChannels>
 void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
                         const AveragingScratch& s) {
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
+  constexpr int nodes_per_element = Family::kNodes;
   const int channels = kChannels > 0 ? kChannels : s.channels();
   const auto mode_pc = s.mode_pc;
   const auto weight_p = s.weight_p;
@@ -75,8 +75,8 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
         const int e = element_p(p);
         if (e < 0) return;
         const Real w = weight_p(p);
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, element_p, local_p, scratch);
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
@@ -101,13 +101,13 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
 
 /// value_pc(p, c) <- the element or nodal average of channel c at every point in it;
 /// kChannels as in scatterAverageSums.
-template <int kChannels>
+template <class Family, int kChannels>
 void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
                     const AveragingScratch& scratch) {
   const int count = points.count;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const int nodes_per_element = shapes.type == ElementType::Tri3 ? 3 : 4;
+  constexpr int nodes_per_element = Family::kNodes;
   const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
   const auto mode_pc = scratch.mode_pc;
   const auto value_pc = scratch.value_pc;
@@ -116,8 +116,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int e = element_p(p);
         if (e < 0) return;
-        PointShape scratch;
-        const PointShape& shape = shapes.of(p, element_p, local_p, scratch);
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, element_p, local_p, scratch);
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
@@ -127,6 +127,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
           }
           Real average = 0;
           for (int a = 0; a < nodes_per_element; ++a) {
+            // a node of no weight may have no sums at all (a grid family's stencil corner)
+            if (shape.value[a] == 0) continue;
             const int i = shape.node[a];
             average += shape.value[a] * node_sums(i, 2 * c) / node_sums(i, 2 * c + 1);
           }
@@ -149,11 +151,14 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
       KOKKOS_LAMBDA(const int j) {
         for (int k = 0; k < columns; ++k) node_sums(active_nodes(j), k) = 0;
       });
-  withChannelCount(scratch.channels(), [&](auto n) {
-    if (scratch.compensated())  // lo is zero: the last call folded it (below)
-      scatterAverageSums<true, decltype(n)::value>(points, shapes, scratch);
-    else
-      scatterAverageSums<false, decltype(n)::value>(points, shapes, scratch);
+  withShapeFamily(shapes, [&](auto family) {
+    withChannelCount(scratch.channels(), [&](auto n) {
+      using Family = decltype(family);
+      if (scratch.compensated())  // lo is zero: the last call folded it (below)
+        scatterAverageSums<Family, true, decltype(n)::value>(points, shapes, scratch);
+      else
+        scatterAverageSums<Family, false, decltype(n)::value>(points, shapes, scratch);
+    });
   });
   // Several ranks: a node shared with another rank also has that rank's points in its sums.
   // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
@@ -172,8 +177,11 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
   } else if (exchange) {
     exchange->sum({nodalField(node_sums)});
   }
-  withChannelCount(scratch.channels(),
-                   [&](auto n) { gatherAverages<decltype(n)::value>(points, shapes, scratch); });
+  withShapeFamily(shapes, [&](auto family) {
+    withChannelCount(scratch.channels(), [&](auto n) {
+      gatherAverages<decltype(family), decltype(n)::value>(points, shapes, scratch);
+    });
+  });
 }
 
 }  // namespace argine

@@ -236,8 +236,10 @@ ImplicitSeepageSolver::ImplicitSeepageSolver(const Mesh& mesh, MaterialPoints& p
     : impl_(std::make_unique<Impl>(mesh, points, materials)) {
   Impl& s = *impl_;
   PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
-  // evaluatePointShapes stores every point's record (no chunk is computed).
+  // The element's own (linear) shapes whatever the mesh's transfers use: the assembly is
+  // element by element (its matrix graph the mesh's connectivity). evaluatePointShapes
+  // stores every point's record (no chunk is computed).
+  evaluatePointShapes(mesh, points, shapes, ShapeFamily::Linear);
   const auto shape_h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), shapes.stored_p);
   const auto element = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.element);
   const auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.material);

@@ -82,6 +82,8 @@ std::string RunGuards::handleLeavingPoints(MaterialPoints& points, const GuardPl
   const auto element = points.element;
   const auto velocity_solid = points.velocity_solid;
   const auto velocity_liquid = points.velocity_liquid;
+  const auto affine_solid = points.affine_velocity_solid;
+  const auto affine_liquid = points.affine_velocity_liquid;
   int outside = 0, first = points.count;
   Kokkos::parallel_reduce(
       "guard_count_outside", Kokkos::RangePolicy<ExecSpace>(0, points.count),
@@ -118,6 +120,7 @@ std::string RunGuards::handleLeavingPoints(MaterialPoints& points, const GuardPl
       KOKKOS_LAMBDA(const int p) {
         if (element(p) >= 0) return;
         for (int d = 0; d < kDim; ++d) velocity_solid(p, d) = velocity_liquid(p, d) = 0;
+        for (int c = 0; c < kAffineComponents; ++c) affine_solid(p, c) = affine_liquid(p, c) = 0;
       });
   removed_ = outside;
   out << "; removed from the computation (" << removed_ << " removed so far)";

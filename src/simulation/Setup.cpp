@@ -13,6 +13,7 @@ Mesh loadMesh(const Deck& deck) {
                                  : readExodusMesh(deck.mesh.exodus_file);
   const std::string source = deck.mesh.generate ? "Mesh/Generate" : deck.mesh.exodus_file;
   checkMeshQuality(mesh, source);
+  mesh.shape_functions = deck.mesh.shape_functions;  // checkMeshSpec: on a structured grid
   checkDeckAgainstMesh(deck, mesh);
   return mesh;
 }

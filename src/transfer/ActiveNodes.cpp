@@ -2,6 +2,7 @@
 
 #include "argine/mesh/Mesh.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/PointShapes.hpp"
 
 namespace argine {
 
@@ -14,6 +15,11 @@ void ActiveNodes::rebuild(const Mesh& mesh, const MaterialPoints& points) {
 
 void ActiveNodes::rebuild(const Mesh& mesh, const MaterialPoints& points,
                           Kokkos::View<const int*, MemSpace> also) {
+  rebuild(mesh, points, nullptr, also);
+}
+
+void ActiveNodes::rebuild(const Mesh& mesh, const MaterialPoints& points, const PointShapes* shapes,
+                          Kokkos::View<const int*, MemSpace> also) {
   if (static_cast<int>(flag_.extent(0)) != mesh.numNodes()) *this = ActiveNodes(mesh.numNodes());
   auto flag = flag_;
   auto nodes = nodes_;
@@ -21,14 +27,26 @@ void ActiveNodes::rebuild(const Mesh& mesh, const MaterialPoints& points,
   const auto element_p = points.element;
   const int nodes_per_element = mesh.nodesPerElement();
 
-  // Mark: every point writes 1 to its element's nodes (equal values, so no race matters).
-  Kokkos::parallel_for(
-      "active_nodes_mark", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p) {
-        const int e = element_p(p);
-        if (e < 0) return;
-        for (int a = 0; a < nodes_per_element; ++a) flag(connectivity(e, a)) = 1;
-      });
+  // Mark: every point writes 1 to its element's nodes or, on the grid families, to its
+  // stencil's (equal values, so no race matters).
+  if (shapes && shapes->onGrid()) {
+    const auto grid_p = shapes->grid_p;
+    const int row = shapes->grid_row;
+    Kokkos::parallel_for(
+        "active_nodes_mark_stencils", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+        KOKKOS_LAMBDA(const int p) {
+          if (element_p(p) < 0) return;
+          for (int a = 0; a < kGridStencilNodes; ++a) flag(gridNode(grid_p(p), row, a)) = 1;
+        });
+  } else {
+    Kokkos::parallel_for(
+        "active_nodes_mark", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+        KOKKOS_LAMBDA(const int p) {
+          const int e = element_p(p);
+          if (e < 0) return;
+          for (int a = 0; a < nodes_per_element; ++a) flag(connectivity(e, a)) = 1;
+        });
+  }
   Kokkos::parallel_for(
       "active_nodes_mark_also", Kokkos::RangePolicy<ExecSpace>(0, also.extent(0)),
       KOKKOS_LAMBDA(const int j) { flag(also(j)) = 1; });

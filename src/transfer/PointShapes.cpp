@@ -1,5 +1,7 @@
 #include "argine/transfer/PointShapes.hpp"
 
+#include <stdexcept>
+
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -11,6 +13,7 @@ namespace argine {
 void PointShapes::allocate(int n) {
   stored_p = View<PointShape*>("stored_p", n);
   computed_c = View<int*>("computed_c", (n + kLanes - 1) / kLanes);
+  grid_p = View<TensorShape*>("grid_p", onGrid() ? n : 0);
 }
 
 Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
@@ -226,11 +229,46 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
 
 }  // namespace
 
+int evaluateGridShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {
+  if (static_cast<int>(shapes.grid_p.extent(0)) != points.count)
+    shapes.grid_p = decltype(shapes.grid_p)("grid_p", points.count);
+  const StructuredGrid grid = mesh.structured;
+  shapes.grid_row = grid.cells[0] + 1;
+  const ShapeFamily family = shapes.family;
+  const auto grid_p = shapes.grid_p;
+  const auto element_p = points.element;
+  const auto position_p = points.position;
+  const auto volume0_p = points.initial_volume;
+  int changed = 0;
+  Kokkos::parallel_reduce(
+      "evaluate_grid_shapes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p, int& count) {
+        TensorShape& shape = grid_p(p);
+        if (element_p(p) < 0) {
+          setLostTensorShape(shape);
+          return;
+        }
+        const int old_x = shape.line[0][0], old_y = shape.line[1][0];
+        const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
+        tensorShape(family, grid, x, gimpHalfWidth(volume0_p(p), grid), shape);
+        if (shape.line[0][0] != old_x || shape.line[1][0] != old_y) ++count;
+      },
+      changed);
+  return changed;
+}
+
 RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator,
                                            const AffineElementMaps& maps, MaterialPoints& points,
                                            PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
+  if (shapes.onGrid()) {  // the element's linear shapes stay (element-based parts), plus:
+    RelocationCounts counts = withShape(mesh.type, [&](auto shape) {
+      return relocate<decltype(shape)>(mesh, locator, AffineElementMaps{}, points, shapes);
+    });
+    counts.changed_element += evaluateGridShapes(mesh, points, shapes);
+    return counts;
+  }
   const bool with_maps = maps.count() == mesh.numElements() && mesh.numElements() > 0;
   shapes.inverse_jacobian_e =
       with_maps ? maps.inverse_jacobian_e : decltype(maps.inverse_jacobian_e){};
@@ -247,13 +285,23 @@ int relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator, Mat
 }
 
 void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {
-  if (shapes.count() != points.count) shapes.allocate(points.count);
+  evaluatePointShapes(mesh, points, shapes, mesh.shape_functions);
+}
+
+void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes,
+                         ShapeFamily family) {
+  if (family != ShapeFamily::Linear && !mesh.structured.valid())
+    throw std::logic_error("GIMP and B-spline shape functions need a structured grid");
+  const bool family_changed = shapes.family != family;
+  shapes.family = family;
+  if (shapes.count() != points.count || family_changed) shapes.allocate(points.count);
   shapes.type = mesh.type;
   shapes.inverse_jacobian_e = {};
   shapes.affine_e = {};
   shapes.connectivity = {};
   Kokkos::deep_copy(shapes.computed_c, 0);  // every record stored
   withShape(mesh.type, [&](auto shape) { evaluate<decltype(shape)>(mesh, points, shapes); });
+  if (shapes.onGrid()) evaluateGridShapes(mesh, points, shapes);
 }
 
 }  // namespace argine

@@ -20,14 +20,22 @@ namespace {
 
 namespace KE = Kokkos::Experimental;
 
-/// Calls f(std::integral_constant<int, nodes>) for the element node count of `shapes`.
+/// Calls f(family, affine) with the shape family of `shapes` (withShapeFamily) and
+/// std::bool_constant<transfer.scheme == APIC>: both chosen once per call.
 template <class Function>
-void withNodeCount(const PointShapes& shapes, Function&& f) {
-  if (shapes.type == ElementType::Tri3)
-    f(std::integral_constant<int, 3>{});
-  else
-    f(std::integral_constant<int, 4>{});
+void withFamilyAndScheme(const PointShapes& shapes, const TransferSettings& transfer,
+                         Function&& f) {
+  withShapeFamily(shapes, [&](auto family) {
+    if (transfer.scheme == TransferScheme::Apic)
+      f(family, std::true_type{});
+    else
+      f(family, std::false_type{});
+  });
 }
+
+/// Whether Family is the grid families' (one point at a time, GridShapesAt).
+template <class Family>
+inline constexpr bool kOnGrid = std::is_same_v<Family, GridShapeFamily>;
 
 /// The element of the transfers' kNodes.
 template <int kNodes>
@@ -182,12 +190,35 @@ struct P2GPointViews {
       saturation_p, conductivity_p, pressure_p;
   Kokkos::View<Real* [kStressComponents], MemSpace> stress_p;
   Kokkos::View<Real*[kDim], MemSpace> velocity_solid_p, velocity_liquid_p;
+  // APIC only
+  Kokkos::View<Real* [kDim], MemSpace> position_p;
+  Kokkos::View<Real*[kAffineComponents], MemSpace> affine_solid_p, affine_liquid_p;
+  Kokkos::View<const Real* [kDim], MemSpace> coordinates_i;
 };
+
+/// What the momentum of a point adds at its node a: m (v + C (x_a - x_p)) with APIC (kAffine),
+/// m v otherwise, for one point or kLanes. `offset` is x_a - x_p.
+template <bool kAffine, class T>
+KOKKOS_INLINE_FUNCTION void affineVelocity(const T v[kDim], const T C[kAffineComponents],
+                                           const T offset[kDim], T out[kDim]) {
+  for (int d = 0; d < kDim; ++d) {
+    out[d] = v[d];
+    if constexpr (kAffine)
+      for (int k = 0; k < kDim; ++k) out[d] = out[d] + C[d * kDim + k] * offset[k];
+  }
+}
+
+/// x_a - x_p for node a of the point(s) at `at`, `xp` their position (APIC).
+template <class At, class Coordinates, class T>
+KOKKOS_INLINE_FUNCTION void nodeOffset(const At& at, const Coordinates& coordinates_i, int a,
+                                       const T xp[kDim], T offset[kDim]) {
+  for (int d = 0; d < kDim; ++d) offset[d] = at.nodal(coordinates_i, a, d) - xp[d];
+}
 
 /// What point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located and all `wet` or
 /// all dry, add to their nodes (4.40-4.47): one row of NodeSumSlot values per node, computed
 /// for all lanes at once and added by `sums` (PackedSums, CompensatedSums) in point order.
-template <int kNodes, class At, class Sums>
+template <int kNodes, bool kAffine, class At, class Sums>
 KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
                                            const P2GPointViews& v, const Sums& sums, int p) {
   using T = typename At::Value;
@@ -200,16 +231,28 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
   loadComponents(v.stress_p, p, stress);
   const T sxx = stress[XX] - bishop, syy = stress[YY] - bishop, sxy = stress[XY];
   const T weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
-  const T vsx = load<T>(v.velocity_solid_p, p, 0), vsy = load<T>(v.velocity_solid_p, p, 1);
+  const T vs[kDim] = {load<T>(v.velocity_solid_p, p, 0), load<T>(v.velocity_solid_p, p, 1)};
+  // APIC: the affine matrices and the offsets x_a - x_p
+  T cs[kAffineComponents] = {}, cl[kAffineComponents] = {}, xp[kDim] = {},
+    offset[kNodes][kDim] = {};
+  if constexpr (kAffine) {
+    loadComponents(v.affine_solid_p, p, cs);
+    if (wet) loadComponents(v.affine_liquid_p, p, cl);
+    xp[0] = load<T>(v.position_p, p, 0);
+    xp[1] = load<T>(v.position_p, p, 1);
+    for (int a = 0; a < kNodes; ++a) nodeOffset(at, v.coordinates_i, a, xp, offset[a]);
+  }
   T row[kNodes][kNodeSumRow];
   for (int a = 0; a < kNodes; ++a) {
     for (int slot = 0; slot < kNodeSumRow; ++slot)  // the liquid's when dry, and the padding
       if (!isSolidSumSlot(slot)) row[a][slot] = splat<T>(0);
     const T N = at.value(a);
     const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
+    T va[kDim];
+    affineVelocity<kAffine>(vs, cs, offset[a], va);
     row[a][kSumMassSolid] = N * m_solid;
-    row[a][kSumMomentumSolid] = N * m_solid * vsx;
-    row[a][kSumMomentumSolid + 1] = N * m_solid * vsy;
+    row[a][kSumMomentumSolid] = N * m_solid * va[0];
+    row[a][kSumMomentumSolid + 1] = N * m_solid * va[1];
     row[a][kSumForceMixture] = -(sxx * dx + sxy * dy) * volume;
     row[a][kSumForceMixture + 1] = -(sxy * dx + syy * dy) * volume + N * weight_mixture;
   }
@@ -221,15 +264,17 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
                    load<T>(v.conductivity_p, p) * volume;
     const T pressure_volume = load<T>(v.pressure_p, p) * volume;
     const T weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
-    const T vlx = load<T>(v.velocity_liquid_p, p, 0), vly = load<T>(v.velocity_liquid_p, p, 1);
+    const T vl[kDim] = {load<T>(v.velocity_liquid_p, p, 0), load<T>(v.velocity_liquid_p, p, 1)};
     for (int a = 0; a < kNodes; ++a) {
       const T N = at.value(a);
+      T va[kDim];
+      affineVelocity<kAffine>(vl, cl, offset[a], va);
       row[a][kSumMassLiquid] = N * m_liquid;
       row[a][kSumMassIntrinsic] = N * m_intrinsic;
       row[a][kSumDrag] = N * drag;
       row[a][kSumVolumeLiquid] = N * volume;
-      row[a][kSumMomentumLiquid] = N * m_intrinsic * vlx;
-      row[a][kSumMomentumLiquid + 1] = N * m_intrinsic * vly;
+      row[a][kSumMomentumLiquid] = N * m_intrinsic * va[0];
+      row[a][kSumMomentumLiquid + 1] = N * m_intrinsic * va[1];
       // -f_L^int = sum B^T p_L m V with p_L compression positive (4.43).
       row[a][kSumForceLiquid] = at.gradient(a, 0) * pressure_volume;
       row[a][kSumForceLiquid + 1] = at.gradient(a, 1) * pressure_volume + N * weight_liquid;
@@ -254,31 +299,53 @@ KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<int*, MemSpace>&
   return true;
 }
 
-template <int kNodes>
+template <class Family, bool kAffine>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
-                         const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
+                         const LiquidCarrying& liquid_m, Real gravity,
+                         const TransferSettings& transfer, const ActiveNodes& active,
                          NodeRecords& records, GridFields& grid, const GridFields* compensation) {
-  const P2GPointViews v{points.material,         points.volume,         points.mass_solid,
-                        points.mass_liquid,      points.density_liquid, points.porosity,
-                        points.saturation,       points.conductivity,   points.pressure_liquid,
-                        points.stress_effective, points.velocity_solid, points.velocity_liquid};
+  const P2GPointViews v{points.material,
+                        points.volume,
+                        points.mass_solid,
+                        points.mass_liquid,
+                        points.density_liquid,
+                        points.porosity,
+                        points.saturation,
+                        points.conductivity,
+                        points.pressure_liquid,
+                        points.stress_effective,
+                        points.velocity_solid,
+                        points.velocity_liquid,
+                        points.position,
+                        points.affine_velocity_solid,
+                        points.affine_velocity_liquid,
+                        transfer.node_coordinates};
   const auto element_p = points.element;
   const auto local_p = points.local;
   const int count = points.count;
-  // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
+  constexpr int kNodes = Family::kNodes;
+  // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
+  // grid families: point by point.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
-    bool wet = false, one_element = false;
-    if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-        mapPointToGrid<kNodes>(at, wet, gravity, v, sums, first);
-      });
-      return;
-    }
-    for (int p = first; p < first + kLanes && p < count; ++p) {
-      if (element_p(p) < 0) continue;
-      mapPointToGrid<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
-                             liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
+    if constexpr (kOnGrid<Family>) {
+      for (int p = first; p < first + kLanes && p < count; ++p)
+        if (element_p(p) >= 0)
+          mapPointToGrid<kNodes, kAffine>(GridShapesAt(shapes, p), liquid_m(v.material_p(p)) != 0,
+                                          gravity, v, sums, p);
+    } else {
+      bool wet = false, one_element = false;
+      if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
+        withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
+          mapPointToGrid<kNodes, kAffine>(at, wet, gravity, v, sums, first);
+        });
+        return;
+      }
+      for (int p = first; p < first + kLanes && p < count; ++p) {
+        if (element_p(p) < 0) continue;
+        mapPointToGrid<kNodes, kAffine>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+                                        liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
+      }
     }
   };
   scatterFromPoints("p2g_two_phase", (count + kLanes - 1) / kLanes, body, active, records, grid,
@@ -289,36 +356,65 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
 struct G2PPointViews {
   Kokkos::View<Real*, MemSpace> volume_p, mass_solid_p, mass_liquid_p, density_liquid_p;
   Kokkos::View<Real*[kDim], MemSpace> velocity_solid_p, velocity_liquid_p;
+  // APIC only
+  Kokkos::View<Real* [kDim], MemSpace> position_p;
+  Kokkos::View<Real*[kAffineComponents], MemSpace> affine_solid_p, affine_liquid_p;
+  Kokkos::View<const Real* [kDim], MemSpace> coordinates_i;
 };
+
+/// APIC's G2P of one phase: v_p = sum N v~_i and C_p = sum v~_i (grad N_i)^T (C_jk =
+/// sum v~_i,j dN_i/dx_k) from the grid velocities in `slot` (x, y) of `values_i`.
+template <int kNodes, class At, class Values, class T>
+KOKKOS_INLINE_FUNCTION void affineVelocityFromGrid(const At& at, const Values& values_i, int slot,
+                                                   T v[kDim], T C[kAffineComponents]) {
+  for (int d = 0; d < kDim; ++d) v[d] = splat<T>(0);
+  for (int c = 0; c < kAffineComponents; ++c) C[c] = splat<T>(0);
+  for (int a = 0; a < kNodes; ++a) {
+    const T N = at.value(a);
+    const T gradient[kDim] = {at.gradient(a, 0), at.gradient(a, 1)};
+    for (int d = 0; d < kDim; ++d) {
+      const T vi = at.nodal(values_i, a, slot + d);
+      v[d] += N * vi;
+      for (int k = 0; k < kDim; ++k) C[d * kDim + k] += vi * gradient[k];
+    }
+  }
+}
 
 /// The velocity update of point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located
 /// and all `wet` or all dry, from the nodal values of readVelocityUpdateValues, and their
 /// momenta added to the nodes (the remap; slots 4-7, one block). The kinetic energies and
-/// the count of non-finite velocities are summed in point order.
-template <int kNodes, class At, class Values, class Sums>
+/// the count of non-finite velocities are summed in point order. FLIP (kAffine false) or
+/// APIC (TransferScheme).
+template <int kNodes, bool kAffine, class At, class Values, class Sums>
 KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real dt, Real pic_solid,
                                                   Real pic_liquid, const Values& values_i,
                                                   const G2PPointViews& v, const Sums& sums, int p,
                                                   Real& ks, Real& kl, int& bad) {
   using T = typename At::Value;
   constexpr int kPoints = At::kCount;
-  // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
-  // interpolation a loop of its own: the conditions are tested once per point, not per node.
-  T as[kDim] = {}, al[kDim] = {}, vs_grid[kDim] = {}, vl[kDim] = {};
-  const auto interpolate = [&](int slot, T sum[kDim]) {
-    for (int a = 0; a < kNodes; ++a) {
-      const T N = at.value(a);
-      for (int d = 0; d < kDim; ++d) sum[d] += N * at.nodal(values_i, a, slot + d);
-    }
-  };
-  interpolate(kReadAccelerationSolid, as);
-  if (pic_solid > 0 || (wet && pic_liquid > 0)) interpolate(kReadVelocitySolid, vs_grid);
-  if (wet) interpolate(kReadAccelerationLiquid, al);
-  if (wet && pic_liquid > 0) interpolate(kReadVelocityLiquid, vl);
-  T v_solid[kDim];
-  loadComponents(v.velocity_solid_p, p, v_solid);
-  for (int d = 0; d < kDim; ++d)
-    v_solid[d] = v_solid[d] + dt * as[d] + pic_solid * (vs_grid[d] - v_solid[d]);
+  T v_solid[kDim], cs[kAffineComponents] = {}, xp[kDim] = {}, offset[kNodes][kDim] = {};
+  T as[kDim] = {}, vs_grid[kDim] = {};  // FLIP
+  if constexpr (kAffine) {
+    affineVelocityFromGrid<kNodes>(at, values_i, kReadVelocitySolid, v_solid, cs);
+    storeComponents(v.affine_solid_p, p, cs);
+    xp[0] = load<T>(v.position_p, p, 0);
+    xp[1] = load<T>(v.position_p, p, 1);
+    for (int a = 0; a < kNodes; ++a) nodeOffset(at, v.coordinates_i, a, xp, offset[a]);
+  } else {
+    // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
+    // interpolation a loop of its own: the conditions are tested once per point, not per node.
+    loadComponents(v.velocity_solid_p, p, v_solid);
+    const auto interpolate = [&](int slot, T sum[kDim]) {
+      for (int a = 0; a < kNodes; ++a) {
+        const T N = at.value(a);
+        for (int d = 0; d < kDim; ++d) sum[d] += N * at.nodal(values_i, a, slot + d);
+      }
+    };
+    interpolate(kReadAccelerationSolid, as);
+    if (pic_solid > 0 || (wet && pic_liquid > 0)) interpolate(kReadVelocitySolid, vs_grid);
+    for (int d = 0; d < kDim; ++d)
+      v_solid[d] = v_solid[d] + dt * as[d] + pic_solid * (vs_grid[d] - v_solid[d]);
+  }
   storeComponents(v.velocity_solid_p, p, v_solid);
   const T vsx = v_solid[0], vsy = v_solid[1];
   const T ms = load<T>(v.mass_solid_p, p);
@@ -332,19 +428,38 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
   T row[kNodes][kNodeSumRow];
   for (int a = 0; a < kNodes; ++a) {
     const T N = at.value(a);
-    row[a][kSumMomentumSolid] = N * ms * vsx;
-    row[a][kSumMomentumSolid + 1] = N * ms * vsy;
+    T va[kDim];
+    affineVelocity<kAffine>(v_solid, cs, offset[a], va);
+    row[a][kSumMomentumSolid] = N * ms * va[0];
+    row[a][kSumMomentumSolid + 1] = N * ms * va[1];
     row[a][kSumMomentumLiquid] = row[a][kSumMomentumLiquid + 1] = splat<T>(0);
   }
   if (wet) {
-    // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
-    // (the header); with pic_liquid = 0 this is FLIP.
-    T v_liquid[kDim];
-    loadComponents(v.velocity_liquid_p, p, v_liquid);
-    for (int d = 0; d < kDim; ++d) {
-      const T flip = v_liquid[d] + dt * al[d];
-      const T relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
-      v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
+    T v_liquid[kDim], cl[kAffineComponents] = {};
+    if constexpr (kAffine) {
+      affineVelocityFromGrid<kNodes>(at, values_i, kReadVelocityLiquid, v_liquid, cl);
+      storeComponents(v.affine_liquid_p, p, cl);
+    } else {
+      // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
+      // (the header); with pic_liquid = 0 this is FLIP.
+      T al[kDim] = {}, vl[kDim] = {};
+      for (int a = 0; a < kNodes; ++a) {
+        const T N = at.value(a);
+        for (int d = 0; d < kDim; ++d)
+          al[d] += N * at.nodal(values_i, a, kReadAccelerationLiquid + d);
+      }
+      if (pic_liquid > 0)
+        for (int a = 0; a < kNodes; ++a) {
+          const T N = at.value(a);
+          for (int d = 0; d < kDim; ++d)
+            vl[d] += N * at.nodal(values_i, a, kReadVelocityLiquid + d);
+        }
+      loadComponents(v.velocity_liquid_p, p, v_liquid);
+      for (int d = 0; d < kDim; ++d) {
+        const T flip = v_liquid[d] + dt * al[d];
+        const T relative_pic = v_solid[d] + vl[d] - vs_grid[d] + dt * (al[d] - as[d]);
+        v_liquid[d] = pic_liquid > 0 ? flip + pic_liquid * (relative_pic - flip) : flip;
+      }
     }
     const T vlx = v_liquid[0], vly = v_liquid[1];
     storeComponents(v.velocity_liquid_p, p, v_liquid);
@@ -357,8 +472,10 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
     const T ml = load<T>(v.density_liquid_p, p) * load<T>(v.volume_p, p);
     for (int a = 0; a < kNodes; ++a) {
       const T N = at.value(a);
-      row[a][kSumMomentumLiquid] = N * ml * vlx;
-      row[a][kSumMomentumLiquid + 1] = N * ml * vly;
+      T va[kDim];
+      affineVelocity<kAffine>(v_liquid, cl, offset[a], va);
+      row[a][kSumMomentumLiquid] = N * ml * va[0];
+      row[a][kSumMomentumLiquid + 1] = N * ml * va[1];
     }
   }
   static_assert(kSumMomentumSolid == kLanes && kSumMomentumLiquid + kDim == 2 * kLanes,
@@ -366,38 +483,56 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
   sums.template addRows<kNodes>(at, row, 1, 2, wet);
 }
 
-template <int kNodes>
+template <class Family, bool kAffine>
 KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const LiquidCarrying& liquid_m,
                                                 const ActiveNodes& active, Real dt,
-                                                VelocityBlend blend, MaterialPoints& points,
-                                                NodeRecords& records, GridFields& grid,
-                                                const GridFields* compensation) {
+                                                const TransferSettings& transfer,
+                                                MaterialPoints& points, NodeRecords& records,
+                                                GridFields& grid, const GridFields* compensation) {
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const G2PPointViews v{points.volume,         points.mass_solid,     points.mass_liquid,
-                        points.density_liquid, points.velocity_solid, points.velocity_liquid};
+  const G2PPointViews v{points.volume,
+                        points.mass_solid,
+                        points.mass_liquid,
+                        points.density_liquid,
+                        points.velocity_solid,
+                        points.velocity_liquid,
+                        points.position,
+                        points.affine_velocity_solid,
+                        points.affine_velocity_liquid,
+                        transfer.node_coordinates};
   readVelocityUpdateValues(active, grid, records);
   const auto values_i = records.values_i;
-  const Real pic_solid = blend.solid, pic_liquid = blend.liquid;
+  const Real pic_solid = transfer.blend.solid, pic_liquid = transfer.blend.liquid;
   const int count = points.count;
-  // One call per kLanes points (lanesMapTogether), else point by point: the same bits.
+  constexpr int kNodes = Family::kNodes;
+  // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
+  // grid families: point by point.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real& ks, Real& kl, int& bad) {
     const int first = chunk * kLanes;
-    bool wet = false, one_element = false;
-    if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
-      withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-        updatePointVelocityAt<kNodes>(at, wet, dt, pic_solid, pic_liquid, values_i, v, sums, first,
-                                      ks, kl, bad);
-      });
-      return;
-    }
-    for (int p = first; p < first + kLanes && p < count; ++p) {
-      if (element_p(p) < 0) continue;
-      updatePointVelocityAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
-                                    liquid_m(material_p(p)) != 0, dt, pic_solid, pic_liquid,
-                                    values_i, v, sums, p, ks, kl, bad);
+    if constexpr (kOnGrid<Family>) {
+      for (int p = first; p < first + kLanes && p < count; ++p)
+        if (element_p(p) >= 0)
+          updatePointVelocityAt<kNodes, kAffine>(GridShapesAt(shapes, p),
+                                                 liquid_m(material_p(p)) != 0, dt, pic_solid,
+                                                 pic_liquid, values_i, v, sums, p, ks, kl, bad);
+    } else {
+      bool wet = false, one_element = false;
+      if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
+        withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
+          updatePointVelocityAt<kNodes, kAffine>(at, wet, dt, pic_solid, pic_liquid, values_i, v,
+                                                 sums, first, ks, kl, bad);
+        });
+        return;
+      }
+      for (int p = first; p < first + kLanes && p < count; ++p) {
+        if (element_p(p) < 0) continue;
+        updatePointVelocityAt<kNodes, kAffine>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+                                               liquid_m(material_p(p)) != 0, dt, pic_solid,
+                                               pic_liquid, values_i, v, sums, p, ks, kl, bad);
+      }
     }
   };
   return scatterFromPoints("g2p_velocities_p2g_momenta", (count + kLanes - 1) / kLanes, body,
@@ -407,7 +542,7 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
 /// The strain, spin, displacement and liquid-divergence increments of point p (T = Real) or
 /// of points p .. p + kLanes - 1 (Lanes), all located and all `wet` or all dry, from the
 /// nodal values of readStrainValues (interpolateVelocityGradients).
-template <int kNodes, class At, class Values>
+template <int kNodes, bool kCentre, class At, class Values>
 KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
                                                const Values& values_i, const PointRates& rates,
                                                int p) {
@@ -440,9 +575,11 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
     // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
     // at the element centre (N = 1/kNodes), not at the point: per-point values differ
     // between rows of points in one element, a pressure mode the momentum equations
-    // cannot see (a one-element-wide quad4 column shows it), which then grows.
+    // cannot see (a one-element-wide quad4 column shows it), which then grows. The grid
+    // families (kCentre false) have no element of their own: the point's N, smooth there.
     constexpr Real centre = Real(1) / kNodes;
     for (int a = 0; a < kNodes; ++a) {
+      const T weight = kCentre ? splat<T>(centre) : at.value(a);
       const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
       const T vlx = at.nodal(values_i, a, kReadStrainVelocityLiquid),
               vly = at.nodal(values_i, a, kReadStrainVelocityLiquid + 1);
@@ -451,9 +588,9 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
       const T c = at.nodal(values_i, a, kReadStrainLiquidContent);
       divergence += vlx * dx + vly * dy;
       relative_divergence += wx * dx + wy * dy;
-      w[0] += centre * wx;
-      w[1] += centre * wy;
-      content += centre * c;
+      w[0] += weight * wx;
+      w[1] += weight * wy;
+      content += weight * c;
       gradient[0] += c * dx;
       gradient[1] += c * dy;
     }
@@ -474,7 +611,7 @@ KOKKOS_INLINE_FUNCTION void clearStrainIncrements(const PointRates& rates, int p
 
 /// One call per kLanes consecutive points: all of them at once where they are located and
 /// all wet or all dry (strainIncrementsAt<Lanes>), else one by one. The same bits.
-template <int kNodes>
+template <class Family>
 void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                                       const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                       const GridFields& grid, NodeRecords& records, Real dt,
@@ -487,24 +624,38 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   const auto values_i = records.values_i;
   const PointRates r = rates;
   const int count = points.count;
+  constexpr int kNodes = Family::kNodes;
+  constexpr bool kCentre = Family::kElementCentre;
   Kokkos::parallel_for(
       "g2p_velocity_gradients", Kokkos::RangePolicy<ExecSpace>(0, (count + kLanes - 1) / kLanes),
       KOKKOS_LAMBDA(const int chunk) {
         const int first = chunk * kLanes;
         const int end = first + kLanes < count ? first + kLanes : count;
-        bool wet = false, one_element = false;
-        if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
-          withLaneShapes<kNodes>(
-              shapes, element_p, local_p, first, one_element,
-              [&](const auto& at) { strainIncrementsAt<kNodes>(at, wet, dt, values_i, r, first); });
-          return;
-        }
-        for (int p = first; p < end; ++p) {
-          if (element_p(p) < 0)
-            clearStrainIncrements(r, p);
-          else
-            strainIncrementsAt<kNodes>(PointShapesAt<Real>(shapes, element_p, local_p, p),
-                                       liquid_m(material_p(p)) != 0, dt, values_i, r, p);
+        if constexpr (kOnGrid<Family>) {
+          for (int p = first; p < end; ++p) {
+            if (element_p(p) < 0)
+              clearStrainIncrements(r, p);
+            else
+              strainIncrementsAt<kNodes, kCentre>(GridShapesAt(shapes, p),
+                                                  liquid_m(material_p(p)) != 0, dt, values_i, r, p);
+          }
+        } else {
+          bool wet = false, one_element = false;
+          if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
+            withLaneShapes<kNodes>(
+                shapes, element_p, local_p, first, one_element, [&](const auto& at) {
+                  strainIncrementsAt<kNodes, kCentre>(at, wet, dt, values_i, r, first);
+                });
+            return;
+          }
+          for (int p = first; p < end; ++p) {
+            if (element_p(p) < 0)
+              clearStrainIncrements(r, p);
+            else
+              strainIncrementsAt<kNodes, kCentre>(
+                  PointShapesAt<Real>(shapes, element_p, local_p, p), liquid_m(material_p(p)) != 0,
+                  dt, values_i, r, p);
+          }
         }
       });
 }
@@ -512,11 +663,12 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
 }  // namespace
 
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
-                     const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
-                     NodeRecords& records, GridFields& grid, const GridFields* compensation) {
-  withNodeCount(shapes, [&](auto nodes) {
-    mapPointsToGridImpl<decltype(nodes)::value>(points, shapes, liquid_m, gravity, active, records,
-                                                grid, compensation);
+                     const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
+                     const ActiveNodes& active, NodeRecords& records, GridFields& grid,
+                     const GridFields* compensation) {
+  withFamilyAndScheme(shapes, transfer, [&](auto family, auto affine) {
+    mapPointsToGridImpl<decltype(family), decltype(affine)::value>(
+        points, shapes, liquid_m, gravity, transfer, active, records, grid, compensation);
   });
 }
 
@@ -539,12 +691,29 @@ void computeNodalVelocities(const ActiveNodes& active, GridFields& grid) {
       });
 }
 
+void advanceNodalVelocities(const ActiveNodes& active, Real dt, GridFields& grid) {
+  const auto nodes = active.nodes();
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "advance_nodal_velocities", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        const bool liquid = g.mass_liquid_intrinsic_i(i) > 0;
+        for (int d = 0; d < kDim; ++d) {
+          g.velocity_solid_i(i, d) += dt * g.acceleration_solid_i(i, d);
+          g.velocity_liquid_i(i, d) =
+              liquid ? g.velocity_liquid_i(i, d) + dt * g.acceleration_liquid_i(i, d)
+                     : g.velocity_solid_i(i, d);
+        }
+      });
+}
+
 KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
                                                  const LiquidCarrying& liquid_m,
                                                  const ActiveNodes& active, Real dt,
-                                                 VelocityBlend blend, MaterialPoints& points,
-                                                 NodeRecords& records, GridFields& grid,
-                                                 const GridFields* compensation) {
+                                                 const TransferSettings& transfer,
+                                                 MaterialPoints& points, NodeRecords& records,
+                                                 GridFields& grid, const GridFields* compensation) {
   records.allocate(grid.numNodes());
   const auto nodes = active.nodes();
   const auto momentum_solid_i = grid.momentum_solid_i;
@@ -556,9 +725,9 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
         for (int d = 0; d < kDim; ++d) momentum_solid_i(i, d) = momentum_liquid_i(i, d) = 0;
       });
   KineticTotals totals;
-  withNodeCount(shapes, [&](auto count) {
-    totals = updateVelocitiesAndMapMomentaImpl<decltype(count)::value>(
-        shapes, liquid_m, active, dt, blend, points, records, grid, compensation);
+  withFamilyAndScheme(shapes, transfer, [&](auto family, auto affine) {
+    totals = updateVelocitiesAndMapMomentaImpl<decltype(family), decltype(affine)::value>(
+        shapes, liquid_m, active, dt, transfer, points, records, grid, compensation);
   });
   return totals;
 }
@@ -568,9 +737,9 @@ void interpolateVelocityGradients(const MaterialPoints& points, const PointShape
                                   const GridFields& grid, NodeRecords& records, Real dt,
                                   PointRates& rates) {
   if (rates.count() != points.count) rates.allocate(points.count);
-  withNodeCount(shapes, [&](auto nodes) {
-    interpolateVelocityGradientsImpl<decltype(nodes)::value>(points, shapes, liquid_m, active, grid,
-                                                             records, dt, rates);
+  withShapeFamily(shapes, [&](auto family) {
+    interpolateVelocityGradientsImpl<decltype(family)>(points, shapes, liquid_m, active, grid,
+                                                       records, dt, rates);
   });
 }
 

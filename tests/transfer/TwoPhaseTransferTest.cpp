@@ -103,7 +103,8 @@ class TransferOnShape : public ::testing::TestWithParam<ElementType> {};
 TEST_P(TransferOnShape, P2GConservesMassAndMomentumExactly) {
   auto [mesh, points, shapes, grid] = randomScene(3, 4, 1.5, 2.0, GetParam(), 7);
   NodeRecords records;
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, activeNodesOf(mesh, points), records, grid);
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, TransferSettings{},
+                  activeNodesOf(mesh, points), records, grid);
 
   // Sums over points (host)...
   const auto ms = hostCopy(points.mass_solid), ml = hostCopy(points.mass_liquid);
@@ -207,7 +208,8 @@ TEST_P(TransferOnShape, UniformStressAndPressureGiveNoForceAtInteriorNodes) {
   GridFields grid;
   grid.allocate(mesh.numNodes());
   NodeRecords records;
-  mapPointsToGrid(points, shapes, liquidFlags(), 0.0, activeNodesOf(mesh, points), records, grid);
+  mapPointsToGrid(points, shapes, liquidFlags(), 0.0, TransferSettings{},
+                  activeNodesOf(mesh, points), records, grid);
   const auto fm = hostCopy(grid.force_mixture_i), fl = hostCopy(grid.force_liquid_i);
   Real sum[4] = {0, 0, 0, 0};
   for (int i = 0; i < mesh.numNodes(); ++i) {
@@ -269,8 +271,9 @@ TEST_P(TransferOnShape, VelocityBlendIsFlipAtZeroAndTakesTheGridVelocitiesAtOne)
     Kokkos::deep_copy(points.velocity_solid, vs0);
     Kokkos::deep_copy(points.velocity_liquid, vl0);
     NodeRecords records;
-    updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, dt, c.blend, points, records,
-                                       grid);
+    updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, dt,
+                                       TransferSettings{TransferScheme::Flip, c.blend, {}}, points,
+                                       records, grid);
     const auto vs = hostCopy(points.velocity_solid), vl = hostCopy(points.velocity_liquid);
     for (int p = 0; p < points.count; ++p)
       for (int d = 0; d < kDim; ++d) {
@@ -368,10 +371,12 @@ TEST_P(TransferOnShape, PicShareRemovesTheVelocityNoiseTheGridCannotSeeAndKeepsM
   auto run = [&](VelocityBlend blend, int steps) {
     for (int n = 0; n < steps; ++n) {
       grid.zero(active);
-      mapPointsToGrid(points, shapes, liquidFlags(), 0.0, active, records, grid);
+      mapPointsToGrid(points, shapes, liquidFlags(), 0.0, TransferSettings{}, active, records,
+                      grid);
       computeNodalVelocities(active, grid);
       Kokkos::deep_copy(grid.acceleration_solid_i, 0.0);
-      updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, 1e-3, blend, points,
+      updatePointVelocitiesAndMapMomenta(shapes, liquidFlags(), active, 1e-3,
+                                         TransferSettings{TransferScheme::Flip, blend, {}}, points,
                                          records, grid);
     }
   };
@@ -394,9 +399,10 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
   NodeRecords records;
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, active, records, grid, &lo);
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, TransferSettings{}, active, records, grid,
+                  &lo);
   foldCompensatedGridSums(active, grid, lo);
-  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, active, records, plain);
+  mapPointsToGrid(points, shapes, liquidFlags(), 9.81, TransferSettings{}, active, records, plain);
 
   MaterialPoints reversed;  // the same points, last first
   reversed.allocate(points.count);
@@ -415,8 +421,8 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
   });
   PointShapes reversed_shapes;
   evaluatePointShapes(mesh, reversed, reversed_shapes);
-  mapPointsToGrid(reversed, reversed_shapes, liquidFlags(), 9.81, active, records, reversed_grid,
-                  &reversed_lo);
+  mapPointsToGrid(reversed, reversed_shapes, liquidFlags(), 9.81, TransferSettings{}, active,
+                  records, reversed_grid, &reversed_lo);
   foldCompensatedGridSums(active, reversed_grid, reversed_lo);
 
   const auto a = hostCopy(grid.force_mixture_i), b = hostCopy(reversed_grid.force_mixture_i);
@@ -473,10 +479,12 @@ void runTransfers(const Mesh& mesh, TransferRun& r, bool compensated) {
   const ActiveNodes active = activeNodesOf(mesh, r.points);
   NodeRecords records;
   const GridFields* compensation = compensated ? &r.lo : nullptr;
-  mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, active, records, r.grid, compensation);
+  mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, TransferSettings{}, active, records,
+                  r.grid, compensation);
   randomiseGrid(r.grid, mesh.numNodes(), 5);
-  updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3, {0.25, 0.5}, r.points,
-                                     records, r.grid, compensation);
+  updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3,
+                                     TransferSettings{TransferScheme::Flip, {0.25, 0.5}, {}},
+                                     r.points, records, r.grid, compensation);
   interpolateVelocityGradients(r.points, r.shapes, liquidFlags(), active, r.grid, records, 1e-3,
                                r.rates);
 }

@@ -22,6 +22,7 @@
 
 #include "CommandLine.hpp"
 #include "HydraulicRun.hpp"
+#include "StageOverrides.hpp"
 #include "VerificationMain.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/materials/RetentionCurve.hpp"
@@ -82,11 +83,13 @@ Real interpolate(const Profile& profile, Real y) {
 
 int run(int argc, char** argv) {
   const av::CommandLine options(
-      argc, argv, {"output", "assert", "duration", "element-size", "mass-scaling", "tag"});
+      argc, argv,
+      {"output", "assert", "duration", "element-size", "mass-scaling", "tag", "transfer"});
   const std::string output = options.text("output", ".");
   const std::string tag = options.text("tag", "infiltration_column_explicit");
   const argine::Deck implicit_deck = argine::readDeck(ARGINE_V3_DECK);
   argine::Deck explicit_deck = argine::readDeck(ARGINE_V3_EXPLICIT_DECK);
+  av::applyTransferOption(options, explicit_deck);
   // The accuracy-against-cost study varies the explicit column (one element wide).
   const Real element_size =
       options.number("element-size", explicit_deck.mesh.generator.element_size);

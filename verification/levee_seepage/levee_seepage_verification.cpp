@@ -39,6 +39,7 @@
 
 #include "CommandLine.hpp"
 #include "HydraulicRun.hpp"
+#include "StageOverrides.hpp"
 #include "VerificationMain.hpp"
 #include "argine/boundary/HydraulicConditions.hpp"
 #include "argine/input/DeckReader.hpp"
@@ -133,9 +134,11 @@ Real exitHeight(const av::HydraulicRun& run, const std::string& name) {
 
 int run(int argc, char** argv) {
   const av::CommandLine options(
-      argc, argv, {"deck", "output", "tag", "duration", "element-size", "mass-scaling"});
+      argc, argv,
+      {"deck", "output", "tag", "duration", "element-size", "mass-scaling", "transfer"});
   const std::string deck_path = options.text("deck", ARGINE_LEVEE_SEEPAGE_DECK);
   argine::Deck deck = argine::readDeck(deck_path);
+  av::applyTransferOption(options, deck);
   // The accuracy-against-cost study (scripts/accuracy_cost.sh) varies these two.
   deck.mesh.generator.element_size =
       options.number("element-size", deck.mesh.generator.element_size);

@@ -19,6 +19,7 @@
 #include "CommandLine.hpp"
 #include "ProfileNorms.hpp"
 #include "ResultTable.hpp"
+#include "StageOverrides.hpp"
 #include "SuctionDiffusionReference.hpp"
 #include "VerificationMain.hpp"
 #include "argine/core/Error.hpp"
@@ -132,9 +133,10 @@ double equivalentFactor(const av::SuctionDiffusionReference& ref, const Isochron
 
 int main(int argc, char** argv) {
   return av::runVerification(argc, argv, [](int argc, char** argv) {
-    const av::CommandLine options(argc, argv,
-                                  {"cases", "elements", "bound-elements", "bound", "factors",
-                                   "fd-cells", "output", "safety", "no-bounds", "help"});
+    const av::CommandLine options(
+        argc, argv,
+        {"cases", "elements", "bound-elements", "bound", "factors", "fd-cells", "output", "safety",
+         "no-bounds", "transfer", "help"});
     if (options.has("help")) {
       std::cout << kUsage;
       return 0;
@@ -168,6 +170,7 @@ int main(int argc, char** argv) {
       const std::string path =
           std::string(ARGINE_SUCTION_DECK_DIR) + "/suction_diffusion_" + name + ".yaml";
       Deck deck = argine::readDeck(path);
+      av::applyTransferOption(options, deck);
       if (options.has("safety"))
         deck.stages.front().time_step.safety_factor = options.number("safety", 0.5);
       const av::SuctionDiffusionParameters parameters = parametersOfDeck(deck);

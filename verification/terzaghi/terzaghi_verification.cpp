@@ -20,6 +20,7 @@
 #include "CommandLine.hpp"
 #include "ProfileNorms.hpp"
 #include "ResultTable.hpp"
+#include "StageOverrides.hpp"
 #include "TerzaghiReference.hpp"
 #include "VerificationMain.hpp"
 #include "argine/core/Error.hpp"
@@ -34,7 +35,7 @@ constexpr const char* kUsage =
     "terzaghi_verification [--deck FILE] [--elements 10,20,40,80] [--bound-elements 40]\n"
     "  [--bound 0.03] [--factors 0.05,0.1,0.2,0.5,1] [--output DIR] [--mass-scaling F]\n"
     "  [--safety S] [--damping A] [--mass-balance complete|simplified] [--tag NAME]\n"
-    "  [--no-bounds]\n"
+    "  [--no-bounds] [--transfer FLIP|APIC]\n"
     "CSV files: <output>/<tag>_errors.csv, _profiles.csv, _consolidation.csv (tag: terzaghi).\n";
 
 /// The reference's parameters, read from the deck so the two cannot disagree.
@@ -134,12 +135,13 @@ int main(int argc, char** argv) {
     const av::CommandLine options(
         argc, argv,
         {"deck", "elements", "bound-elements", "bound", "factors", "output", "mass-scaling",
-         "safety", "damping", "mass-balance", "tag", "no-bounds", "help"});
+         "safety", "damping", "mass-balance", "tag", "no-bounds", "transfer", "help"});
     if (options.has("help")) {
       std::cout << kUsage;
       return 0;
     }
     Deck deck = argine::readDeck(options.text("deck", ARGINE_TERZAGHI_DECK));
+    av::applyTransferOption(options, deck);
     argine::StageSpec& stage = deck.stages.front();
     if (options.has("mass-scaling")) stage.mass_scaling = options.number("mass-scaling", 1);
     if (options.has("safety"))

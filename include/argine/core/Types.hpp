@@ -16,6 +16,10 @@ inline constexpr int kDim = 2;
 /// Number of stored stress/strain components in plane strain: xx, yy, zz, xy.
 inline constexpr int kStressComponents = 4;
 
+/// Number of stored components of a velocity gradient or affine velocity matrix C (the
+/// full kDim x kDim tensor, row-major: xx, xy, yx, yy).
+inline constexpr int kAffineComponents = kDim * kDim;
+
 /// Execution and memory spaces of the particle-grid kernels. Debian's Kokkos has only
 /// Serial; kernels are written so OpenMP/CUDA work unchanged.
 using ExecSpace = Kokkos::DefaultExecutionSpace;

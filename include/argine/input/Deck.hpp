@@ -14,6 +14,7 @@
 #include "argine/materials/MaterialParameters.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/timestep/CriterionKind.hpp"
+#include "argine/transfer/TransferScheme.hpp"
 
 namespace argine {
 
@@ -44,6 +45,7 @@ struct MeshSpec {
   std::string exodus_file;  ///< absolute path of an Exodus II mesh, or empty
   bool generate = false;    ///< true when `Mesh/Generate` is used instead of a file
   GeneratorSpec generator;
+  ShapeFamily shape_functions = ShapeFamily::Linear;  ///< `Shape Functions`
 };
 
 // ---------------------------------------------------------------- materials
@@ -231,12 +233,13 @@ struct MaterialChangeSpec {
 struct StageSpec {
   std::string name;
   SolverKind solver = SolverKind::Explicit;
-  Real duration = 0;             ///< (s)
-  Real gravity = 9.81;           ///< magnitude (m/s^2), acting in -y; 0 switches it off
-  Real local_damping = 0;        ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
-  Real mass_scaling = 1;         ///< factor >= 1 on the nodal masses
-  Real solid_pic_fraction = 0;   ///< PIC share of the solid velocity update (VelocityBlend)
-  Real liquid_pic_fraction = 0;  ///< PIC share of the liquid velocity update
+  Real duration = 0;       ///< (s)
+  Real gravity = 9.81;     ///< magnitude (m/s^2), acting in -y; 0 switches it off
+  Real local_damping = 0;  ///< alpha in [0, 1): damping force = -alpha |f| sign(v)
+  Real mass_scaling = 1;   ///< factor >= 1 on the nodal masses
+  TransferScheme transfer = TransferScheme::Flip;  ///< `Velocity Transfer`
+  Real solid_pic_fraction = 0;   ///< FLIP: PIC share of the solid velocity update (VelocityBlend)
+  Real liquid_pic_fraction = 0;  ///< FLIP: PIC share of the liquid velocity update
   /// `Liquid Pressure: held` (quasi-static stages): p_L and S_L stay as the stage found them
   /// while the skeleton settles into equilibrium with them; the liquid moves with the solid.
   bool hold_liquid_pressure = false;

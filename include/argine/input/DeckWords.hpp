@@ -64,6 +64,17 @@ inline constexpr DeckWord<SolverKind> kSolverWords[] = {
     {"implicit seepage", SolverKind::ImplicitSeepage},
 };
 
+inline constexpr DeckWord<ShapeFamily> kShapeFamilyWords[] = {
+    {"linear", ShapeFamily::Linear},
+    {"GIMP", ShapeFamily::Gimp},
+    {"B-spline", ShapeFamily::BSpline},
+};
+
+inline constexpr DeckWord<TransferScheme> kTransferSchemeWords[] = {
+    {"FLIP", TransferScheme::Flip},
+    {"APIC", TransferScheme::Apic},
+};
+
 inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
     {"cfl dry", CriterionKind::CflDry},
     {"cfl undrained", CriterionKind::CflUndrained},

@@ -13,8 +13,10 @@
 ///   applyAccelerationBoundaryConditions   fixities, impermeable boundaries
 ///   correctHydraulicAccelerations   infiltration / seepage face predictor-corrector
 ///                               (4.53-4.59)
-///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11), and the remap of the
-///                               new point momenta to the nodes, in one pass
+///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11; FLIP) or, with APIC,
+///                               v_p and C_p from the grid's v + dt a (conditions imposed),
+///                               and the remap of the new point momenta to the nodes, in one
+///                               pass
 ///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs, the
 ///                               infiltration / seepage corrections re-imposed
 ///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
@@ -260,6 +262,7 @@ class ExplicitTwoPhaseSolver {
   void correctHydraulicAccelerations(Real dt);
   void updatePointVelocities(Real dt);
   void updateNodalVelocities();
+  void constrainNodalVelocities();  // velocity conditions and hydraulic corrections
   void computeStrainIncrements(Real dt);
   void accountBoundaryFluxes(Real dt);
   void updatePointStates();
@@ -317,7 +320,7 @@ class ExplicitTwoPhaseSolver {
   int outflow_limited_ = 0;                     ///< points it capped in this step
   TimeStepControl time_step_;
   MomentumSettings momentum_;
-  VelocityBlend velocity_blend_;  ///< PIC shares of the point velocity update (stage keys)
+  TransferSettings transfer_;  ///< FLIP (with its PIC shares) or APIC (stage keys)
   Real gravity_ = 0;
   std::string stage_name_;
   bool stage_started_ = false;

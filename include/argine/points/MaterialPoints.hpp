@@ -6,8 +6,9 @@
 /// in tension; liquid pressure p_L is positive in compression (water pressure below the
 /// water table is positive); suction s = -p_L where p_L < 0 (gas pressure is zero).
 ///
-/// A new field must also be added to forEachPointField (src/checkpoint/CheckpointPoints.cpp),
-/// so that checkpoints hold it, and kCheckpointFormatVersion incremented (doc/checkpoints.md).
+/// A new field must also be added to ARGINE_MATERIAL_POINT_FIELDS (points/PointFields.hpp),
+/// which sorting, migration and checkpoints go through (a static_assert there checks it), and
+/// kCheckpointFormatVersion incremented (doc/checkpoints.md).
 
 #include <string>
 
@@ -36,6 +37,11 @@ struct MaterialPoints {
   View<Real* [kDim]> displacement;     ///< solid displacement u = x - x0 (m)
   View<Real* [kDim]> velocity_solid;   ///< v_S (m/s)
   View<Real* [kDim]> velocity_liquid;  ///< v_L (m/s)
+  /// APIC's affine velocity matrices C (Jiang et al. 2015), components (xx, xy, yx, yy) with
+  /// C_jk ~ d v_j / d x_k (1/s): a point carries v + C (x - x_p) around it. Zero and unread
+  /// with the FLIP transfer (TransferScheme, transfer/TwoPhaseTransfer.hpp).
+  View<Real* [kAffineComponents]> affine_velocity_solid;
+  View<Real* [kAffineComponents]> affine_velocity_liquid;
 
   // Geometry and phase masses
   View<Real*> volume;          ///< current volume V (m^3 per metre thickness in 2D)

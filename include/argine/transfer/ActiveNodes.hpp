@@ -10,6 +10,7 @@ namespace argine {
 
 struct MaterialPoints;
 struct Mesh;
+struct PointShapes;
 
 class ActiveNodes {
  public:
@@ -22,6 +23,10 @@ class ActiveNodes {
   /// The same, plus the listed nodes (e.g. the nodes shared with other MPI ranks, which must
   /// be cleared and solved on every rank holding them).
   void rebuild(const Mesh& mesh, const MaterialPoints& points,
+               Kokkos::View<const int*, MemSpace> also);
+  /// The same with the points' shapes: on the grid families (GIMP, B-spline) the nodes of
+  /// every located point's 3 x 3 stencil instead of its element's.
+  void rebuild(const Mesh& mesh, const MaterialPoints& points, const PointShapes* shapes,
                Kokkos::View<const int*, MemSpace> also);
   /// The nodes of `from` whose `mask` entry is non-zero (e.g. the nodes this rank owns).
   void assignMasked(const ActiveNodes& from, Kokkos::View<const unsigned char*, MemSpace> mask);

@@ -7,6 +7,7 @@
 
 #include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/mesh/GridShapes.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
 
@@ -91,6 +92,16 @@ struct PointShapes {
   View<int*> computed_c;
   ElementType type = ElementType::Quad4;  ///< element shape the kernels dispatch on
 
+  /// The shape functions the transfers use (Mesh::shape_functions, or Linear where a caller
+  /// asks for the element's own, e.g. the implicit path). GIMP and B-spline: every located
+  /// point has a TensorShape in grid_p (stored_p then holds the linear shapes of its
+  /// element, for the element-based parts: location, free boundary).
+  ShapeFamily family = ShapeFamily::Linear;
+  View<TensorShape*> grid_p;  ///< GIMP, B-spline: each point's 3 x 3 stencil
+  int grid_row = 0;           ///< GIMP, B-spline: nodes per grid row (cells[0] + 1)
+  /// Whether the transfers use the grid families' records (grid_p).
+  KOKKOS_INLINE_FUNCTION bool onGrid() const { return family != ShapeFamily::Linear; }
+
   /// Set by relocateAndEvaluateShapes with AffineElementMaps, empty after the other
   /// evaluations: the shapes of a located point p whose element e has affine_e(e) = 1 are
   /// nodes connectivity(e, a) and affineShapes(xi_p, inverse_jacobian_e(e)), xi_p =
@@ -148,6 +159,84 @@ struct PointShapes {
   }
 };
 
+/// A point's shapes on the grid families, expanded from its TensorShape: what a kernel that
+/// is not written for the tensor product reads (nodes -1 and zero weights for a lost point).
+struct GridShapeRecord {
+  int node[kGridStencilNodes];
+  Real value[kGridStencilNodes];
+  Real gradient[kGridStencilNodes][kDim];
+};
+
+/// Node a = ax + kGridStencil ay of a tensor shape on a grid of `row` nodes per row, its N and
+/// dN/dx: the one expansion of TensorShape.
+KOKKOS_INLINE_FUNCTION int gridNode(const TensorShape& t, int row, int a) {
+  const int ax = a % kGridStencil, ay = a / kGridStencil;
+  return t.line[0][ax] < 0 ? -1 : t.line[0][ax] + t.line[1][ay] * row;
+}
+KOKKOS_INLINE_FUNCTION Real gridValue(const TensorShape& t, int a) {
+  return t.value[0][a % kGridStencil] * t.value[1][a / kGridStencil];
+}
+KOKKOS_INLINE_FUNCTION Real gridGradient(const TensorShape& t, int a, int d) {
+  const int ax = a % kGridStencil, ay = a / kGridStencil;
+  return d == 0 ? t.gradient[0][ax] * t.value[1][ay] : t.value[0][ax] * t.gradient[1][ay];
+}
+KOKKOS_INLINE_FUNCTION void expandGridShape(const TensorShape& t, int row, GridShapeRecord& out) {
+  for (int a = 0; a < kGridStencilNodes; ++a) {
+    out.node[a] = gridNode(t, row, a);
+    out.value[a] = gridValue(t, a);
+    out.gradient[a][0] = gridGradient(t, a, 0);
+    out.gradient[a][1] = gridGradient(t, a, 1);
+  }
+}
+/// The tensor shape of a point outside the mesh: line -1 and zero weights.
+KOKKOS_INLINE_FUNCTION void setLostTensorShape(TensorShape& t) {
+  for (int d = 0; d < kDim; ++d)
+    for (int k = 0; k < kGridStencil; ++k) {
+      t.line[d][k] = d == 0 ? -1 : 0;
+      t.value[d][k] = t.gradient[d][k] = 0;
+    }
+}
+
+/// The shape-function families as policies a kernel is written against once and
+/// instantiated for each (withShapeFamily): kNodes nodes a point, Record the type of()
+/// fills, kElementCentre whether a value "at the element centre" (the advective flux, 4.16)
+/// is the mean of the element's nodes (linear) or the point's own interpolation (grid).
+template <int Nodes>
+struct ElementShapeFamily {
+  static constexpr int kNodes = Nodes;
+  static constexpr bool kElementCentre = true;
+  using Record = PointShape;
+  template <class ElementView, class LocalView>
+  KOKKOS_FORCEINLINE_FUNCTION static const PointShape& of(const PointShapes& shapes, int p,
+                                                          const ElementView& element_p,
+                                                          const LocalView& local_p,
+                                                          PointShape& scratch) {
+    return shapes.of(p, element_p, local_p, scratch);
+  }
+};
+
+struct GridShapeFamily {
+  static constexpr int kNodes = kGridStencilNodes;
+  static constexpr bool kElementCentre = false;
+  using Record = GridShapeRecord;
+  template <class ElementView, class LocalView>
+  KOKKOS_INLINE_FUNCTION static const GridShapeRecord& of(const PointShapes& shapes, int p,
+                                                          const ElementView&, const LocalView&,
+                                                          GridShapeRecord& scratch) {
+    expandGridShape(shapes.grid_p(p), shapes.grid_row, scratch);
+    return scratch;
+  }
+};
+
+/// Calls f(family) with the policy of `shapes`: GridShapeFamily on the grid families, else
+/// ElementShapeFamily of the element's node count. Chosen once per call, not per point.
+template <class Function>
+decltype(auto) withShapeFamily(const PointShapes& shapes, Function&& f) {
+  if (shapes.onGrid()) return f(GridShapeFamily{});
+  if (shapes.type == ElementType::Tri3) return f(ElementShapeFamily<3>{});
+  return f(ElementShapeFamily<4>{});
+}
+
 /// Every point's shapes as PointShapes::of gives them (stored or computed), in one View: for
 /// tests and checks that compare shapes, not for the step.
 Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
@@ -155,8 +244,20 @@ Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
 
 /// Evaluate N and dN/dx at every point from its element and local coordinates (points with
 /// element < 0, lost from the mesh, get node -1 and zero weights). Reallocates `shapes` when
-/// the number of points changed. Dispatches once on mesh.type.
+/// the number of points changed. Dispatches once on mesh.type. The family is
+/// mesh.shape_functions; the grid families also get their tensor shapes (evaluateGridShapes).
 void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes);
+/// The same with the family given: Linear where a path has only the element's own shapes
+/// (the implicit seepage assembly).
+void evaluatePointShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes,
+                         ShapeFamily family);
+
+/// The grid families' tensor shapes of every point from its position (GridShapes.hpp; uGIMP
+/// half-width from the point's initial volume, gimpHalfWidth), and a lost point's (element
+/// -1) zero record. Returns the number of located points whose stencil differs from the one
+/// grid_p held (for the active nodes). Needs shapes.family GIMP or B-spline and a structured
+/// mesh.
+int evaluateGridShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes);
 
 /// Re-locates every point from its position (element and local coordinates, as
 /// PointLocator::locateAll) and evaluates its shape functions, in one pass: a point still

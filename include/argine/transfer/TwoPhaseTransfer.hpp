@@ -16,6 +16,7 @@
 /// stress (4.5, chi = S_L): sigma = sigma' - S_L p_L m.
 
 #include "argine/core/Types.hpp"
+#include "argine/transfer/TransferScheme.hpp"
 
 namespace argine {
 
@@ -37,14 +38,20 @@ using LiquidCarrying = Kokkos::View<const int*, MemSpace>;
 /// boundary conditions. The grid must be zero on the nodes the points touch. With
 /// `compensation` (reproducible sums, CompensatedSum.hpp) the sums are compensated, their low
 /// parts in the same fields of `compensation` (zero there too), to be folded once complete.
+/// With APIC (`transfer`) the momenta are sum N m (v_p + C_p (x_i - x_p)).
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
-                     const LiquidCarrying& liquid_m, Real gravity, const ActiveNodes& active,
-                     NodeRecords& records, GridFields& grid,
+                     const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
+                     const ActiveNodes& active, NodeRecords& records, GridFields& grid,
                      const GridFields* compensation = nullptr);
 
 /// Nodal velocities v = momentum / mass and the nodal liquid content rho_L n S_L =
 /// M_L / (sum N V) (4.16) on the active nodes. A node without liquid mass gets v_L = v_S.
 void computeNodalVelocities(const ActiveNodes& active, GridFields& grid);
+
+/// The grid's own update of the nodal velocities, v~_i = v_i + dt a_i for both phases, on the
+/// active nodes (a node without liquid mass: v~_L = v~_S): what APIC interpolates to the
+/// points. The caller imposes the velocity conditions on them next.
+void advanceNodalVelocities(const ActiveNodes& active, Real dt, GridFields& grid);
 
 /// Kinetic sums of the updated point velocities.
 struct KineticTotals {
@@ -53,39 +60,23 @@ struct KineticTotals {
   int non_finite_points = 0;  ///< points whose updated velocity is not finite
 };
 
-/// Shares of a PIC update in the point velocity update, per phase, in [0, 1] and per step;
-/// 0 is the thesis' FLIP update (7.10, 7.11). FLIP keeps the part of the point velocities
-/// that the grid cannot see (3 points per triangle, 3 nodes): nothing damps it, not even the
-/// Darcy drag, which acts on nodal velocities, so it can grow into point-scale noise. A share
-/// alpha per step removes that part in about dt / alpha; it also diffuses the resolved
-/// velocity (about alpha h^2 / dt), so the solid's share must stay small.
-///   solid:  v_S <- v_S + dt sum N a_S,i + alpha_S (sum N v_S,i - v_S)
-///   liquid: the relative velocity w = v_L - v_S relaxes towards the grid's, sum N w_i:
-///           v_L <- (1 - alpha_L) (v_L + dt sum N a_L,i)
-///                  + alpha_L (v_S,new + sum N (w_i + dt (a_L,i - a_S,i)))
-/// so the liquid follows the solid's own update and only its Darcy part is taken from the
-/// grid: drag-dominated (relaxation time k / (n g)), it has no inertia worth keeping.
-struct VelocityBlend {
-  Real solid = 0;   ///< alpha_S: PIC share of the solid velocity update
-  Real liquid = 0;  ///< alpha_L: grid share of the liquid's relative velocity update
-};
-
-/// Sec. 3.3 steps 3-4 in one pass over the points: the G2P of the nodal accelerations,
+/// Sec. 3.3 steps 3-4 in one pass over the points. FLIP: the G2P of the nodal accelerations,
 /// v_p += dt sum N a_i for the solid and, at liquid-carrying points, the liquid (Euler-Cromer
-/// 7.10, 7.11), blended with a PIC update when `blend` asks for it (VelocityBlend; the nodal
-/// velocities v_i are those of t^k that the drag used, not constrained: a fixed node's zero
+/// 7.10, 7.11), blended with a PIC update when `transfer.blend` asks for it (VelocityBlend; the
+/// nodal velocities v_i are those of t^k that the drag used, not constrained: a fixed node's zero
 /// solid velocity against its points' FLIP velocity would otherwise feed the difference into
-/// the liquid's relative velocity every step); and the P2G of the updated momenta
-/// sum N M_S v_S and sum N rho_L V v_L into the (first zeroed) nodal momenta of the active
-/// nodes (compensated as mapPointsToGrid with `compensation`, whose momenta must be zero on
-/// the active nodes). Call computeNodalVelocities next (after folding, when compensated).
+/// the liquid's relative velocity every step). APIC: v_p = sum N v~_i and C_p = sum v~_i
+/// (grad N_i)^T of each phase, v~_i the grid velocities of advanceNodalVelocities (in the
+/// velocity slots of GridFields, conditions imposed). Then the P2G of the updated momenta
+/// sum N M_S v_S and sum N rho_L V v_L (APIC: with C_p (x_i - x_p) added to v_p) into the
+/// (first zeroed) nodal momenta of the active nodes (compensated as mapPointsToGrid with
+/// `compensation`, whose momenta must be zero on the active nodes). Call
+/// computeNodalVelocities next (after folding, when compensated).
 /// Returns the kinetic energies of the new velocities.
-KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
-                                                 const LiquidCarrying& liquid_m,
-                                                 const ActiveNodes& active, Real dt,
-                                                 VelocityBlend blend, MaterialPoints& points,
-                                                 NodeRecords& records, GridFields& grid,
-                                                 const GridFields* compensation = nullptr);
+KineticTotals updatePointVelocitiesAndMapMomenta(
+    const PointShapes& shapes, const LiquidCarrying& liquid_m, const ActiveNodes& active, Real dt,
+    const TransferSettings& transfer, MaterialPoints& points, NodeRecords& records,
+    GridFields& grid, const GridFields* compensation = nullptr);
 
 /// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
 /// spin increment dt skew(grad v_S) (the Jaumann rotation, ObjectiveStressRate.hpp),

@@ -1,0 +1,147 @@
+#pragma once
+/// @file GridShapes.hpp
+/// Shape functions on a StructuredGrid that reach beyond the point's cell: uGIMP and
+/// quadratic B-splines, each the tensor product of two 1D functions of the point's position
+/// in cells, xi = (x - origin) / h. A point touches at most 3 grid lines per axis (9 nodes).
+/// The single source of these functions: the transfers, the active nodes and the tests call
+/// them. KOKKOS_INLINE_FUNCTION throughout, for kernels.
+///
+/// At the edges of the grid a node that would lie outside it (a "ghost") is folded into its
+/// two inner neighbours as if its value were extrapolated linearly, v_ghost = 2 v_edge -
+/// v_next: N_edge += 2 N_ghost, N_next -= N_ghost. The functions keep the partition of unity
+/// and reproduce linear fields (so APIC's D_p and the momenta stay exact), and the B-spline
+/// becomes the linear hat in the outer half cell: it interpolates at the edge node, where a
+/// fixed node then fixes the material (Steffen et al. 2008 modify the cubic spline in the same
+/// spirit).
+
+#include "argine/core/Types.hpp"
+#include "argine/mesh/Mesh.hpp"
+
+namespace argine {
+
+/// Grid lines (nodes) a point's shape functions touch along one axis.
+inline constexpr int kGridStencil = 3;
+/// Nodes of a point's 2D stencil.
+inline constexpr int kGridStencilNodes = kGridStencil * kGridStencil;
+
+/// Quadratic B-spline of a node at distance r (cells) from the point: value and dB/dr.
+///   |r| <= 1/2: 3/4 - r^2;   1/2 < |r| < 3/2: (3/2 - |r|)^2 / 2;   else 0.
+KOKKOS_INLINE_FUNCTION void quadraticBSpline(Real r, Real& value, Real& slope) {
+  const Real a = r < 0 ? -r : r;
+  const Real sign = r < 0 ? -1 : 1;
+  if (a <= 0.5) {
+    value = 0.75 - r * r;
+    slope = -2 * r;
+  } else if (a < 1.5) {
+    const Real b = 1.5 - a;
+    value = 0.5 * b * b;
+    slope = -sign * b;
+  } else {
+    value = 0;
+    slope = 0;
+  }
+}
+
+/// uGIMP (Bardenhagen & Kober 2004, Eq. 37): the linear hat averaged over the point's domain
+/// of half-width l (cells, 0 < l <= 1/2), at distance r (cells): value and dS/dr.
+///   |r| < l: 1 - (r^2 + l^2) / (2 l);  l <= |r| <= 1 - l: 1 - |r|;
+///   1 - l < |r| < 1 + l: (1 + l - |r|)^2 / (4 l);  else 0.
+KOKKOS_INLINE_FUNCTION void gimp(Real r, Real l, Real& value, Real& slope) {
+  const Real a = r < 0 ? -r : r;
+  const Real sign = r < 0 ? -1 : 1;
+  if (a < l) {
+    value = 1 - (r * r + l * l) / (2 * l);
+    slope = -r / l;
+  } else if (a <= 1 - l) {
+    value = 1 - a;
+    slope = -sign;
+  } else if (a < 1 + l) {
+    const Real b = 1 + l - a;
+    value = b * b / (4 * l);
+    slope = -sign * b / (2 * l);
+  } else {
+    value = 0;
+    slope = 0;
+  }
+}
+
+/// A point's shape functions along one axis: grid lines (node indices along the axis),
+/// values and derivatives (1/m).
+struct GridStencil1D {
+  int line[kGridStencil];
+  Real value[kGridStencil];
+  Real gradient[kGridStencil];
+};
+
+/// The 1D stencil of a point at xi (cells from the grid origin) on an axis of `cells` cells
+/// of size h (m): lines base .. base + 2 with base = floor(xi - 1/2) (every line the B-spline
+/// or a uGIMP function of half-width l <= 1/2 reaches), ghosts folded (file comment); a slot
+/// whose ghost was folded keeps value and gradient 0 on the edge line.
+KOKKOS_INLINE_FUNCTION void gridStencil1D(ShapeFamily family, Real xi, int cells, Real h,
+                                          Real half_width, GridStencil1D& s) {
+  const int base = static_cast<int>(Kokkos::Experimental::floor(xi - 0.5));
+  for (int k = 0; k < kGridStencil; ++k) {
+    const int line = base + k;
+    Real value, slope;
+    if (family == ShapeFamily::BSpline)
+      quadraticBSpline(xi - line, value, slope);
+    else
+      gimp(xi - line, half_width, value, slope);
+    s.line[k] = line;
+    s.value[k] = value;
+    s.gradient[k] = slope / h;
+  }
+  for (int k = 0; k < kGridStencil; ++k) {
+    const int line = s.line[k];
+    if (line >= 0 && line <= cells) continue;
+    // ghost: its edge and next lines are in the stencil (base >= -1, base + 2 <= cells + 1)
+    const int edge = line < 0 ? 0 : cells;
+    const int next = line < 0 ? 1 : cells - 1;
+    for (int j = 0; j < kGridStencil; ++j) {
+      if (s.line[j] == edge) {
+        s.value[j] += 2 * s.value[k];
+        s.gradient[j] += 2 * s.gradient[k];
+      } else if (s.line[j] == next) {
+        s.value[j] -= s.value[k];
+        s.gradient[j] -= s.gradient[k];
+      }
+    }
+    s.line[k] = edge;
+    s.value[k] = 0;
+    s.gradient[k] = 0;
+  }
+}
+
+/// A point's 2D stencil: the two 1D stencils; node (a, b) = line[0][a] + line[1][b] (cells[0]
+/// + 1), N = value[0][a] value[1][b]. 120 bytes, expanded where read (GridShapeRecord).
+struct TensorShape {
+  int line[kDim][kGridStencil];
+  Real value[kDim][kGridStencil];
+  Real gradient[kDim][kGridStencil];
+};
+
+/// The tensor shape of a point at x (m) on `grid`; `half_width` (cells) for uGIMP.
+KOKKOS_INLINE_FUNCTION void tensorShape(ShapeFamily family, const StructuredGrid& grid,
+                                        const Real x[kDim], Real half_width, TensorShape& shape) {
+  for (int d = 0; d < kDim; ++d) {
+    GridStencil1D s;
+    const Real xi = (x[d] - grid.origin[d]) / grid.spacing[d];
+    gridStencil1D(family, xi, grid.cells[d], grid.spacing[d], half_width, s);
+    for (int k = 0; k < kGridStencil; ++k) {
+      shape.line[d][k] = s.line[k];
+      shape.value[d][k] = s.value[k];
+      shape.gradient[d][k] = s.gradient[k];
+    }
+  }
+}
+
+/// uGIMP half-width (cells) of a point of initial volume V0 on cells of area hx hy: the
+/// domain of a point seeded m x m per cell is a cell scaled by 1/m, l = 1/(2m) =
+/// sqrt(V0 / (hx hy)) / 2, at most 1/2 (one point per cell).
+KOKKOS_INLINE_FUNCTION Real gimpHalfWidth(Real initial_volume, const StructuredGrid& grid) {
+  const Real l =
+      0.5 * Kokkos::Experimental::sqrt(initial_volume / (grid.spacing[0] * grid.spacing[1]));
+  return l < 0.5 ? l : 0.5;
+}
+
+}  // namespace argine

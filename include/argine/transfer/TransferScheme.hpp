@@ -1,0 +1,49 @@
+#pragma once
+/// @file TransferScheme.hpp
+/// How point velocities and grid momenta are exchanged in the explicit step (stage key
+/// `Velocity Transfer`): the thesis' FLIP update, optionally blended with PIC, or APIC.
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+/// The velocity transfer of a stage, chosen once per stage (the kernels are templates on it).
+enum class TransferScheme {
+  /// The thesis (7.10, 7.11): v_p += dt sum N a_i; momenta sum N m v_p. Keeps the part of the
+  /// point velocities that the grid cannot see (VelocityBlend removes it at a cost).
+  Flip,
+  /// Affine particle-in-cell (Jiang et al. 2015, J. Comput. Phys. 261): v_p = sum N v~_i and
+  /// C_p = sum v~_i (grad N_i)^T from the updated grid velocities v~_i = v_i + dt a_i (with
+  /// the velocity conditions); momenta sum N m (v_p + C_p (x_i - x_p)). Conserves linear and
+  /// angular momentum in the transfers and leaves no grid-invisible point velocity. For
+  /// linear (Tri3, Quad4) shape functions C = sum v~_i (grad N_i)^T is exactly Jiang's
+  /// B_p D_p^-1, since there D_p grad N_i = N_i (x_i - x_p).
+  Apic,
+};
+
+/// Shares of a PIC update in the FLIP point velocity update, per phase, in [0, 1] and per
+/// step; 0 is the thesis' FLIP update (7.10, 7.11). FLIP keeps the part of the point
+/// velocities that the grid cannot see (3 points per triangle, 3 nodes): nothing damps it,
+/// not even the Darcy drag, which acts on nodal velocities, so it can grow into point-scale
+/// noise. A share alpha per step removes that part in about dt / alpha; it also diffuses the
+/// resolved velocity (about alpha h^2 / dt), so the solid's share must stay small.
+///   solid:  v_S <- v_S + dt sum N a_S,i + alpha_S (sum N v_S,i - v_S)
+///   liquid: the relative velocity w = v_L - v_S relaxes towards the grid's, sum N w_i:
+///           v_L <- (1 - alpha_L) (v_L + dt sum N a_L,i)
+///                  + alpha_L (v_S,new + sum N (w_i + dt (a_L,i - a_S,i)))
+/// so the liquid follows the solid's own update and only its Darcy part is taken from the
+/// grid: drag-dominated (relaxation time k / (n g)), it has no inertia worth keeping.
+struct VelocityBlend {
+  Real solid = 0;   ///< alpha_S: PIC share of the solid velocity update
+  Real liquid = 0;  ///< alpha_L: grid share of the liquid's relative velocity update
+};
+
+/// What the velocity update and the momentum transfers of a stage need.
+struct TransferSettings {
+  TransferScheme scheme = TransferScheme::Flip;
+  VelocityBlend blend;  ///< FLIP only
+  /// APIC: the mesh's node coordinates x_i (the momenta carry C_p (x_i - x_p)).
+  Kokkos::View<const Real* [kDim], MemSpace> node_coordinates;
+};
+
+}  // namespace argine
