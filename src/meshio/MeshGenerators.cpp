@@ -157,6 +157,16 @@ Mesh generateRectangle(const GeneratorSpec& spec) {
   Mesh mesh = assembleMesh(spec.element, points, elements, std::vector<int>(elements.size(), 0),
                            {spec.block});
   addBoxSideSets(mesh, lo, hi);
+  if (!triangles) {
+    // Spacing from the box, as the node coordinates are: node (i, j) = origin + (i, j) spacing
+    // up to rounding (the last row and column sit exactly on the box).
+    mesh.structured.cells[0] = nx;
+    mesh.structured.cells[1] = ny;
+    for (int d = 0; d < kDim; ++d) {
+      mesh.structured.origin[d] = lo[d];
+      mesh.structured.spacing[d] = (hi[d] - lo[d]) / (d == 0 ? nx : ny);
+    }
+  }
   return mesh;
 }
 

@@ -47,6 +47,15 @@ struct SideSet {
   std::vector<int> sides;     ///< local side index (0-based) of each side
 };
 
+/// A structured grid of equal axis-aligned Quad4 cells (generateRectangle): node (i, j) =
+/// i + j (cells[0] + 1), element (i, j) = i + j cells[0], i along x from the lower left.
+struct StructuredGrid {
+  int cells[kDim] = {0, 0};     ///< cells along x and y; 0: the mesh is not structured
+  Real origin[kDim] = {0, 0};   ///< lower-left corner (m)
+  Real spacing[kDim] = {0, 0};  ///< cell sizes along x and y (m)
+  bool valid() const { return cells[0] > 0 && cells[1] > 0; }
+};
+
 /// Background mesh. Views live in MemSpace so kernels read them directly.
 struct Mesh {
   ElementType type = ElementType::Tri3;
@@ -60,6 +69,8 @@ struct Mesh {
   std::vector<ElementBlock> blocks;
   std::vector<NodeSet> node_sets;
   std::vector<SideSet> side_sets;
+
+  StructuredGrid structured;  ///< set by generateRectangle (Quad4); invalid otherwise
 
   int numNodes() const { return static_cast<int>(coordinates.extent(0)); }
   int numElements() const { return static_cast<int>(connectivity.extent(0)); }

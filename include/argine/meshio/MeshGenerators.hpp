@@ -19,7 +19,8 @@ Mesh generateMesh(const GeneratorSpec& spec);
 /// Structured grid over [lower_left, upper_right]: nx = ceil(width / element_size) by
 /// ny = ceil(height / element_size) quads (or each quad split into two triangles along
 /// alternating diagonals, so no direction is preferred), one block `spec.block` (id 1).
-/// Nodes are numbered row by row from the lower left (x fastest), elements likewise.
+/// Nodes are numbered row by row from the lower left (x fastest), elements likewise; for
+/// quads mesh.structured describes that grid.
 /// Throws InputError for an empty box or a non-positive element size.
 Mesh generateRectangle(const GeneratorSpec& spec);
 
