@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "argine/core/Error.hpp"
+#include "argine/meshio/RectangleRegions.hpp"
 
 namespace argine {
 
@@ -167,6 +168,7 @@ Mesh generateRectangle(const GeneratorSpec& spec) {
       mesh.structured.spacing[d] = (hi[d] - lo[d]) / (d == 0 ? nx : ny);
     }
   }
+  if (!spec.regions.empty()) applyRectangleRegions(spec, mesh);
   return mesh;
 }
 
