@@ -236,8 +236,10 @@ ListSchema lockingMitigationKeys() {
 ListSchema materialKeys() {
   ListSchema material;
   material.add(KeySpec::text("Block", "mesh element block filled with this material").require());
-  material.add(KeySpec::integer("Points Per Element", "material points seeded in each element")
-                   .onlyIntegers({1, 3, 4, 6, 12})
+  material.add(KeySpec::integer("Points Per Element",
+                                "material points seeded in each element: tri3 1, 3, 4, 6 or 12; "
+                                "quad4 1, 4, 9 or 16 (an m x m grid)")
+                   .onlyIntegers({1, 3, 4, 6, 9, 12, 16})
                    .byDefault(3LL));
   material.add(KeySpec::choice("Phase Model", deckWords(kPhaseModelWords),
                                "dry: solid only; saturated: two-phase, S_L = 1; unsaturated: "
