@@ -32,7 +32,7 @@ K0Profile::K0Profile(const InitialisationSpec& spec, const Mesh& mesh,
       ground_(spec.ground_surface, "Initialisation/Ground Surface (m)"),
       max_suction_(spec.max_suction),
       gravity_(gravity),
-      columns_(mesh, elementMaterials(mesh, materials)) {
+      columns_(mesh, elementMaterials(mesh, materials), regionMaterials(mesh, materials)) {
   if (!spec.phreatic_surface.empty())
     phreatic_ = Polyline(spec.phreatic_surface, "Initialisation/Phreatic Surface (m)");
 }

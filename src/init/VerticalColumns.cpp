@@ -8,18 +8,54 @@
 
 namespace argine {
 
+namespace {
+
+bool hasRegions(const Mesh& mesh, const ElementBlock& block) {
+  const int index = static_cast<int>(&block - mesh.blocks.data());
+  return std::any_of(mesh.regions.begin(), mesh.regions.end(),
+                     [&](const BlockRegion& region) { return region.block == index; });
+}
+
+/// Heights where the vertical line at x crosses the polygon's edges, pairwise the inside.
+/// Edges are half-open in x, so a vertex on the line counts once and a vertical edge never.
+std::vector<Real> crossings(const std::vector<std::array<Real, 2>>& polygon, Real x) {
+  std::vector<Real> heights;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const auto& a = polygon[i];
+    const auto& b = polygon[j];
+    if ((a[0] > x) != (b[0] > x))
+      heights.push_back(a[1] + (x - a[0]) * (b[1] - a[1]) / (b[0] - a[0]));
+  }
+  std::sort(heights.begin(), heights.end());
+  return heights;
+}
+
+}  // namespace
+
 std::vector<int> elementMaterials(const Mesh& mesh, const std::vector<MaterialSpec>& materials) {
   std::vector<int> material_of(mesh.numElements(), -1);
   for (std::size_t m = 0; m < materials.size(); ++m) {
     const ElementBlock* block = mesh.findBlock(materials[m].block);
-    if (!block) continue;
+    if (!block || hasRegions(mesh, *block)) continue;
     for (int e : block->elements) material_of[e] = static_cast<int>(m);
   }
   return material_of;
 }
 
-VerticalColumns::VerticalColumns(const Mesh& mesh, std::vector<int> element_material)
-    : element_material_(std::move(element_material)) {
+std::vector<MaterialPolygon> regionMaterials(const Mesh& mesh,
+                                             const std::vector<MaterialSpec>& materials) {
+  std::vector<MaterialPolygon> polygons;
+  for (const BlockRegion& region : mesh.regions)
+    for (std::size_t m = 0; m < materials.size(); ++m)
+      if (materials[m].block == mesh.blocks[region.block].name)
+        polygons.push_back({region.vertices, static_cast<int>(m)});
+  return polygons;
+}
+
+VerticalColumns::VerticalColumns(const Mesh& mesh, std::vector<int> element_material,
+                                 std::vector<MaterialPolygon> polygons)
+    : element_material_(std::move(element_material)), polygons_(std::move(polygons)) {
   const auto coordinates =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   const auto connectivity =
@@ -65,8 +101,16 @@ int VerticalColumns::binOf(Real x) const {
 
 std::vector<ColumnInterval> VerticalColumns::intervals(Real x, Real y_low, Real y_high) const {
   std::vector<ColumnInterval> found;
-  if (bins_.empty() || !(y_high > y_low)) return found;
-  for (int e : bins_[binOf(x)]) {
+  if (!(y_high > y_low)) return found;
+  for (const MaterialPolygon& polygon : polygons_) {
+    const std::vector<Real> heights = crossings(polygon.vertices, x);
+    for (std::size_t i = 0; i + 1 < heights.size(); i += 2) {
+      const Real lo = std::max(heights[i], y_low), hi = std::min(heights[i + 1], y_high);
+      if (hi > lo) found.push_back({lo, hi, polygon.material});
+    }
+  }
+  static const std::vector<int> kNoElements;
+  for (int e : bins_.empty() ? kNoElements : bins_[binOf(x)]) {
     // The vertical line meets a convex element in one segment: the heights where it crosses
     // the element's edges (a vertical edge on the line gives both its ends).
     const auto& c = corners_[e];

@@ -23,8 +23,10 @@ ListSchema regionKeys() {
 ListSchema generatorKeys() {
   ListSchema generate;
   generate.add(KeySpec::choice("Type", deckWords(kGeneratorWords),
-                               "rectangle: one block filling the box; polygon: soil regions "
-                               "inside the box, the rest becomes block `empty`")
+                               "rectangle: a structured grid of the box, one block filling it or "
+                               "soil regions seeded at point resolution (see Regions); polygon: "
+                               "elements following the region edges, the rest of the box becomes "
+                               "block `empty`")
                    .require());
   generate.add(KeySpec::choice("Element", deckWords(kElementWords), "element shape")
                    .byDefault(std::string("quad4")));
@@ -35,15 +37,22 @@ ListSchema generatorKeys() {
   generate.add(
       KeySpec::reals("Upper Right (m)", "m", 2, "corner (x_max, y_max) of the box").require());
   generate.add(KeySpec::text("Block",
-                             "element block name of the rectangle; node and side sets "
-                             "`left`, `right`, `bottom`, `top` are made too")
+                             "element block name of a rectangle without Regions; node and side "
+                             "sets `left`, `right`, `bottom`, `top` are made too")
                    .when("Type", {"rectangle"})
                    .byDefault(std::string("soil")));
-  generate.add(KeySpec::namedSublists("Regions", "region", regionKeys(),
-                                      "soil regions; each region's name becomes its block name")
-                   .when("Type", {"polygon"})
-                   .require()
-                   .atLeastOneEntry());
+  generate.add(
+      KeySpec::namedSublists(
+          "Regions", "region", regionKeys(),
+          "soil regions (polygons that may share edges but not area); each region's name becomes "
+          "its block name and the rest of the box block `empty`. In a rectangle the grid stays "
+          "structured: an element's block is the region holding its centroid (the first in deck "
+          "order when on a shared edge), and a region's material is seeded at the pattern "
+          "positions inside the polygon in every element it touches, each point keeping its "
+          "pattern share of the element area")
+          .requireWhen("Type", {"polygon"})
+          .require()
+          .atLeastOneEntry());
   return generate;
 }
 
@@ -242,8 +251,10 @@ ListSchema lockingMitigationKeys() {
 ListSchema materialKeys() {
   ListSchema material;
   material.add(KeySpec::text("Block", "mesh element block filled with this material").require());
-  material.add(KeySpec::integer("Points Per Element", "material points seeded in each element")
-                   .onlyIntegers({1, 3, 4, 6, 12})
+  material.add(KeySpec::integer("Points Per Element",
+                                "material points seeded in each element: tri3 1, 3, 4, 6 or 12; "
+                                "quad4 1, 4, 9 or 16 (an m x m grid)")
+                   .onlyIntegers({1, 3, 4, 6, 9, 12, 16})
                    .byDefault(3LL));
   material.add(KeySpec::choice("Phase Model", deckWords(kPhaseModelWords),
                                "dry: solid only; saturated: two-phase, S_L = 1; unsaturated: "

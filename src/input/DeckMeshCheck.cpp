@@ -1,4 +1,6 @@
 // The deck against the mesh: every block and set a deck names must exist.
+#include <algorithm>
+
 #include "DeckParts.hpp"
 #include "ValueText.hpp"
 #include "argine/core/Error.hpp"
@@ -20,13 +22,33 @@ std::string absentMessage(const std::string& what, const std::string& name,
   return message;
 }
 
+/// In a rectangle with Regions, the region blocks (those a material may fill).
+std::vector<std::string> regionBlockNames(const Mesh& mesh) {
+  std::vector<std::string> names;
+  for (const BlockRegion& region : mesh.regions) {
+    const std::string& name = mesh.blocks[region.block].name;
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
 }  // namespace
 
 void checkDeckAgainstMesh(const Deck& deck, const Mesh& mesh) {
-  for (const MaterialSpec& material : deck.materials)
+  const std::vector<std::string> region_blocks = regionBlockNames(mesh);
+  for (const MaterialSpec& material : deck.materials) {
+    const std::string where = "Materials/" + material.name + "/Block";
     if (!mesh.findBlock(material.block))
-      throw InputError("Materials/" + material.name + "/Block",
-                       absentMessage("element block", material.block, mesh.blockNames()));
+      throw InputError(where, absentMessage("element block", material.block, mesh.blockNames()));
+    // Region points are seeded in every element a region touches, so whole elements of the
+    // rest of the box would hold a second material beside them.
+    if (!region_blocks.empty() && std::find(region_blocks.begin(), region_blocks.end(),
+                                            material.block) == region_blocks.end())
+      throw InputError(where, "block '" + material.block +
+                                  "' is the part of the box outside the regions; in a rectangle "
+                                  "with Regions a material fills a region: " +
+                                  input_detail::joinWords(region_blocks));
+  }
   input_detail::checkOneMaterialPerBlock(deck);
   for (const StageSpec& stage : deck.stages) {
     for (const BoundarySpec& boundary : stage.boundaries) {

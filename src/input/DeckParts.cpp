@@ -336,12 +336,13 @@ MeshSpec parseMesh(const DeckSection& mesh) {
   generator.element_size = generate.real("Element Size (m)");
   generator.lower_left = pair(generate.reals("Lower Left (m)"));
   generator.upper_right = pair(generate.reals("Upper Right (m)"));
-  if (generator.kind == GeneratorSpec::Kind::Rectangle) {
-    generator.block = generate.text("Block");
-  } else {
-    for (const auto& region : generate.entries("Regions"))
-      generator.regions.push_back(parseRegion(region));
-  }
+  if (generator.kind == GeneratorSpec::Kind::Rectangle) generator.block = generate.text("Block");
+  for (const auto& region : generate.entries("Regions"))
+    generator.regions.push_back(parseRegion(region));
+  if (!generator.regions.empty() && generate.has("Block"))
+    throw InputError(generate.pathOf("Block"),
+                     "a rectangle with Regions takes its block names from the regions (the rest "
+                     "of the box is block `empty`); remove Block or the Regions");
   return spec;
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "argine/core/Error.hpp"
+#include "argine/meshio/RectangleRegions.hpp"
 
 namespace argine {
 
@@ -157,14 +158,17 @@ Mesh generateRectangle(const GeneratorSpec& spec) {
   Mesh mesh = assembleMesh(spec.element, points, elements, std::vector<int>(elements.size(), 0),
                            {spec.block});
   addBoxSideSets(mesh, lo, hi);
-  if (!triangles) {  // the numbering above: node (i, j) = i + j (nx + 1)
+  if (!triangles) {
+    // Spacing from the box, as the node coordinates are: node (i, j) = origin + (i, j) spacing
+    // up to rounding (the last row and column sit exactly on the box).
     mesh.structured.cells[0] = nx;
     mesh.structured.cells[1] = ny;
     for (int d = 0; d < kDim; ++d) {
       mesh.structured.origin[d] = lo[d];
-      mesh.structured.spacing[d] = (hi[d] - lo[d]) / mesh.structured.cells[d];
+      mesh.structured.spacing[d] = (hi[d] - lo[d]) / (d == 0 ? nx : ny);
     }
   }
+  if (!spec.regions.empty()) applyRectangleRegions(spec, mesh);
   return mesh;
 }
 

@@ -1,10 +1,13 @@
 #include "argine/points/Seeding.hpp"
 
 #include <Kokkos_Sort.hpp>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
 #include "argine/core/Error.hpp"
+#include "argine/mesh/MeshRegions.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
 #include "argine/points/PointFields.hpp"
 
@@ -80,32 +83,77 @@ std::string whereOf(const SeedRequest& request, const Mesh& mesh) {
   return out.str();
 }
 
-/// Fills the points of one element from its pattern (host views).
+/// Fills point `next` from position k of an element's pattern (host views).
 template <class Shape, class HostPoints, class Coordinates, class Connectivity>
-void seedElement(int element, const SeedRequest& request, const std::vector<Real>& pattern,
-                 const Coordinates& coordinates, const Connectivity& connectivity, HostPoints& host,
-                 int& next) {
+void seedPoint(int element, int k, const SeedRequest& request, const std::vector<Real>& pattern,
+               const Coordinates& coordinates, const Connectivity& connectivity, HostPoints& host,
+               int& next) {
   Real X[Shape::kNodes][kDim];
   gatherElementCoordinates<Shape>(coordinates, connectivity, element, X);
-  const int n = request.points_per_element;
-  for (int k = 0; k < n; ++k) {
-    const Real xi[kDim] = {pattern[2 * k], pattern[2 * k + 1]};
-    Real x[kDim], J[kDim][kDim];
-    mapToPhysical<Shape>(X, xi, x);
-    // Sub-region volume: det J at its centre x reference sub-area (exact, see Seeding.hpp).
-    const Real volume = jacobian<Shape>(X, xi, J) * Shape::kReferenceArea / n;
-    const int p = next++;
-    host.id(p) = p;
-    host.element(p) = element;
-    host.material(p) = request.material;
-    host.volume(p) = volume;
-    host.initial_volume(p) = volume;
-    for (int d = 0; d < kDim; ++d) {
-      host.local(p, d) = xi[d];
-      host.position(p, d) = x[d];
-      host.initial_position(p, d) = x[d];
+  const Real xi[kDim] = {pattern[2 * k], pattern[2 * k + 1]};
+  Real x[kDim], J[kDim][kDim];
+  mapToPhysical<Shape>(X, xi, x);
+  // Sub-region volume: det J at its centre x reference sub-area (exact, see Seeding.hpp).
+  const Real volume =
+      jacobian<Shape>(X, xi, J) * Shape::kReferenceArea / request.points_per_element;
+  const int p = next++;
+  host.id(p) = p;
+  host.element(p) = element;
+  host.material(p) = request.material;
+  host.volume(p) = volume;
+  host.initial_volume(p) = volume;
+  for (int d = 0; d < kDim; ++d) {
+    host.local(p, d) = xi[d];
+    host.position(p, d) = x[d];
+    host.initial_position(p, d) = x[d];
+  }
+}
+
+/// One point of a region-seeded request: position k of element's pattern.
+struct RegionSeed {
+  int element = 0;
+  int request = 0;
+  int k = 0;
+};
+
+/// The pattern positions of the region-seeded requests that lie inside their regions
+/// (MeshRegions.hpp decides which region holds a position), by element, then request, then
+/// position. `regions_of[r]` lists the regions of request r's block (empty: not region-seeded).
+template <class Shape, class Coordinates, class Connectivity>
+std::vector<RegionSeed> regionSeeds(const Mesh& mesh,
+                                    const std::vector<std::vector<int>>& regions_of,
+                                    const std::vector<std::vector<Real>>& patterns,
+                                    const Coordinates& coordinates,
+                                    const Connectivity& connectivity) {
+  std::vector<RegionSeed> seeds;
+  const RegionLocator locator(mesh.regions);
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    Real X[Shape::kNodes][kDim];
+    gatherElementCoordinates<Shape>(coordinates, connectivity, e, X);
+    std::array<Real, kDim> low{X[0][0], X[0][1]}, high = low;
+    for (int a = 1; a < Shape::kNodes; ++a)
+      for (int d = 0; d < kDim; ++d) {
+        low[d] = std::min(low[d], X[a][d]);
+        high[d] = std::max(high[d], X[a][d]);
+      }
+    for (std::size_t r = 0; r < regions_of.size(); ++r) {
+      const bool near = std::any_of(regions_of[r].begin(), regions_of[r].end(), [&](int region) {
+        return locator.mayTouch(region, low, high);
+      });
+      if (!near) continue;
+      const int block = mesh.regions[regions_of[r].front()].block;
+      const int n = static_cast<int>(patterns[r].size()) / 2;
+      for (int k = 0; k < n; ++k) {
+        const Real xi[kDim] = {patterns[r][2 * k], patterns[r][2 * k + 1]};
+        Real x[kDim];
+        mapToPhysical<Shape>(X, xi, x);
+        const int region = locator.regionAt({x[0], x[1]});
+        if (region >= 0 && mesh.regions[region].block == block)
+          seeds.push_back({e, static_cast<int>(r), k});
+      }
     }
   }
+  return seeds;
 }
 
 /// Host mirrors of the fields seeding fills.
@@ -176,7 +224,9 @@ std::vector<Real> seedingPattern(ElementType type, int points_per_element,
 MaterialPoints seedMaterialPoints(const Mesh& mesh, const std::vector<SeedRequest>& requests) {
   const int elements = mesh.numElements();
   std::vector<std::vector<Real>> patterns;
-  std::vector<int> owner(elements, -1);  // request seeding each element
+  std::vector<std::vector<int>> regions_of(requests.size());  // regions of each request's block
+  std::vector<int> owner(elements, -1);  // whole-element request seeding each element
+  std::vector<int> requested(mesh.blocks.size(), -1);
   long total = 0;
   for (size_t r = 0; r < requests.size(); ++r) {
     const SeedRequest& request = requests[r];
@@ -188,6 +238,17 @@ MaterialPoints seedMaterialPoints(const Mesh& mesh, const std::vector<SeedReques
       throw InputError(where, out.str());
     }
     patterns.push_back(seedingPattern(mesh.type, request.points_per_element, where));
+    for (std::size_t region = 0; region < mesh.regions.size(); ++region)
+      if (mesh.regions[region].block == request.block)
+        regions_of[r].push_back(static_cast<int>(region));
+    if (!regions_of[r].empty()) {
+      if (requested[request.block] >= 0)
+        throw InputError(where, "block '" + mesh.blocks[request.block].name +
+                                    "' is already seeded by another material (a block takes "
+                                    "one material)");
+      requested[request.block] = static_cast<int>(r);
+      continue;
+    }
     for (const int e : mesh.blocks[request.block].elements) {
       if (owner[e] >= 0) {
         std::ostringstream out;
@@ -200,21 +261,42 @@ MaterialPoints seedMaterialPoints(const Mesh& mesh, const std::vector<SeedReques
     }
   }
 
-  MaterialPoints points;
-  points.allocate(static_cast<int>(total));
-  HostSeedFields host(points);
   const auto coordinates =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   const auto connectivity =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity);
+  const bool triangles = mesh.type == ElementType::Tri3;
+  std::vector<RegionSeed> seeds;
+  if (!mesh.regions.empty())
+    seeds = triangles ? regionSeeds<Tri3>(mesh, regions_of, patterns, coordinates, connectivity)
+                      : regionSeeds<Quad4>(mesh, regions_of, patterns, coordinates, connectivity);
+  total += static_cast<long>(seeds.size());
+
+  MaterialPoints points;
+  points.allocate(static_cast<int>(total));
+  HostSeedFields host(points);
   int next = 0;
+  auto seed = [&](int e, int k, int r) {
+    if (triangles)
+      seedPoint<Tri3>(e, k, requests[r], patterns[r], coordinates, connectivity, host, next);
+    else
+      seedPoint<Quad4>(e, k, requests[r], patterns[r], coordinates, connectivity, host, next);
+  };
+  std::size_t s = 0;
   for (int e = 0; e < elements; ++e) {  // increasing element: points come out sorted
     const int r = owner[e];
-    if (r < 0) continue;
-    if (mesh.type == ElementType::Tri3)
-      seedElement<Tri3>(e, requests[r], patterns[r], coordinates, connectivity, host, next);
-    else
-      seedElement<Quad4>(e, requests[r], patterns[r], coordinates, connectivity, host, next);
+    if (r >= 0) {
+      if (s < seeds.size() && seeds[s].element == e) {
+        std::ostringstream out;
+        out << "element " << e + 1 << " of block '" << mesh.blocks[requests[r].block].name
+            << "' also holds points of region '"
+            << mesh.blocks[requests[seeds[s].request].block].name
+            << "': in a mesh with regions a material fills a region, not the rest of the box";
+        throw InputError(whereOf(requests[r], mesh), out.str());
+      }
+      for (int k = 0; k < requests[r].points_per_element; ++k) seed(e, k, r);
+    }
+    for (; s < seeds.size() && seeds[s].element == e; ++s) seed(e, seeds[s].k, seeds[s].request);
   }
   host.copyTo(points);
   return points;

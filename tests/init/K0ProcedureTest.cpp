@@ -92,6 +92,37 @@ TEST(VerticalColumns, IntervalsFollowTheBlocks) {
   }
 }
 
+TEST(VerticalColumns, RegionsLayerByTheirPolygonsNotByWholeElements) {
+  // A rectangle with Regions: 2 x 4 cells of 1 m; block "slope" has the region
+  // (0, 0), (2, 0), (0, 2) (hypotenuse x + y = 2), whose points are seeded inside the
+  // polygon; its element blocks (here rows 0-1, a staircase) must not decide the layers.
+  Mesh mesh = layeredMesh(ElementType::Quad4);
+  mesh.blocks[0].name = "slope";
+  mesh.regions.push_back({0, {{0.0, 0.0}, {2.0, 0.0}, {0.0, 2.0}}});
+  const std::vector<MaterialSpec> materials{material("sand", "slope", PhaseModel::Dry, 0.4, 2000),
+                                            material("b", "upper", PhaseModel::Dry, 0.4, 2000)};
+  const std::vector<int> by_element = elementMaterials(mesh, materials);
+  for (int e : mesh.blocks[0].elements) EXPECT_EQ(by_element[e], -1);  // not whole elements
+  const VerticalColumns columns(mesh, by_element, regionMaterials(mesh, materials));
+  // x = 1.5: the slope on [0, 0.5] (not [0, 2]), then nothing up to the upper block [2, 3].
+  const auto found = columns.intervals(1.5, 0, 10);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].material, 0);
+  EXPECT_NEAR(found[0].y_low, 0.0, 1e-15);
+  EXPECT_NEAR(found[0].y_high, 0.5, 1e-15);
+  EXPECT_EQ(found[1].material, 1);
+  EXPECT_NEAR(found[1].y_low, 2.0, 1e-15);
+  EXPECT_NEAR(found[1].y_high, 3.0, 1e-15);
+  // The K0 overburden at (1.5, 0.1) below a ground line at y = 2 counts the soil present:
+  // 0.4 m of dry sand, 0.6 * 2000 * 10 * 0.4 = 4800 Pa (whole elements of rows 0-1 would
+  // give 1.9 m, 22800 Pa).
+  InitialisationSpec spec;
+  spec.method = InitialisationSpec::Method::K0Procedure;
+  spec.ground_surface = {{0.0, 2.0}, {2.0, 2.0}};
+  const K0Profile profile(spec, mesh, materials, 10);
+  EXPECT_NEAR(profile.totalVerticalStress(1.5, 0.1), -4800, 1e-9);
+}
+
 TEST(K0Profile, DryOverSaturatedWithRiverAboveGround) {
   // Lower block saturated (n = 0.4, rho_S = 2700), upper block dry (n = 0.5, rho_S = 2600),
   // ground surface at y = 3, g = 10. Phreatic surface at y = 1.5 (in the lower layer).

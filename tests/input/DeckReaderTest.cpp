@@ -376,4 +376,31 @@ TEST(DeckReader, PolygonRegionsAreChecked) {
       "Mesh/Generate/Block", "applies only when Type is rectangle");
 }
 
+TEST(DeckReader, RectangleRegionsAreReadAndChecked) {
+  const std::string rectangle =
+      "Generate: {Type: rectangle, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right "
+      "(m): [0.1, 1.0]}";
+  const auto withRegions = [&](const std::string& extra, const std::string& vertices) {
+    return replaced(kBaseDeck, rectangle,
+                    "Generate: {Type: rectangle, Element Size (m): 0.1, Lower Left (m): [0.0, "
+                    "0.0], Upper Right (m): [1.0, 1.0]" +
+                        extra + ", Regions: {soil: {Vertices (m): " + vertices +
+                        "}, crest: {Vertices (m): [0, 0.5, 1, 0.5, 1, 1]}}}");
+  };
+  // Clockwise vertices are stored counter-clockwise; regions keep deck order.
+  const Deck deck = parseText(withRegions("", "[0, 0, 0, 0.5, 1, 0.5, 1, 0]"));
+  const GeneratorSpec& generator = deck.mesh.generator;
+  EXPECT_EQ(generator.kind, GeneratorSpec::Kind::Rectangle);
+  ASSERT_EQ(generator.regions.size(), 2u);
+  EXPECT_EQ(generator.regions[0].block, "soil");
+  EXPECT_EQ(generator.regions[1].block, "crest");
+  EXPECT_EQ(generator.regions[0].vertices[0], (std::array<Real, 2>{1.0, 0.0}));
+  const std::string where = "Mesh/Generate/Regions/soil/Vertices (m)";
+  expectDeckError(withRegions("", "[0, 0, 1.2, 0, 0, 0.5]"), where,
+                  "vertex 2 (1.2, 0) lies outside the box");
+  expectDeckError(withRegions("", "[0, 0, 1, 0]"), where, "at least 3 vertices, got 2");
+  expectDeckError(withRegions(", Block: soil", "[0, 0, 1, 0, 0, 0.5]"), "Mesh/Generate/Block",
+                  "takes its block names from the regions");
+}
+
 }  // namespace argine::test

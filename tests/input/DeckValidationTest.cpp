@@ -137,10 +137,18 @@ TEST(DeckValidation, IntegersRejectFractionsAndUnlistedValues) {
   expectDeckError(replaced(kBaseDeck, key, key + "\n      Points Per Element: 2.5"),
                   "Materials/soil/Points Per Element", "expected an integer, got real number 2.5");
   expectDeckError(replaced(kBaseDeck, key, key + "\n      Points Per Element: 5"),
-                  "Materials/soil/Points Per Element", "must be one of 1, 3, 4, 6, 12, got 5");
+                  "Materials/soil/Points Per Element",
+                  "must be one of 1, 3, 4, 6, 9, 12, 16, got 5");
   // A whole number written as a real is an integer.
   const Deck deck = parseText(replaced(kBaseDeck, key, key + "\n      Points Per Element: 4.0"));
   EXPECT_EQ(deck.materials[0].points_per_element, 4);
+  // The 3 x 3 and 4 x 4 quad patterns (whether the mesh's elements have them is checked
+  // when the points are seeded).
+  for (const int n : {9, 16}) {
+    const Deck quads = parseText(
+        replaced(kBaseDeck, key, key + "\n      Points Per Element: " + std::to_string(n)));
+    EXPECT_EQ(quads.materials[0].points_per_element, n);
+  }
 }
 
 TEST(DeckValidation, AlternativesNeedExactlyOne) {

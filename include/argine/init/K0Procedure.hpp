@@ -12,7 +12,8 @@
 ///   S_L, k   = the material's SWRC/HCC at p_L (saturated: 1, k_sat; dry: no liquid)
 ///   sigma_yy = -( int_y^{y_g(x)} gamma(x, z) dz + rho_L g max(0, y_ph(x) - y_g(x)) ),
 ///              gamma = (1 - n) rho_S g + n S_L(p_L(z)) rho_L g of the material actually at
-///              (x, z) in the mesh (dry layers (1 - n) rho_S g, empty elements 0); a point
+///              (x, z) in the mesh (dry layers (1 - n) rho_S g, empty elements 0; in a
+///              rectangle with Regions, the region polygons, VerticalColumns.hpp); a point
 ///              above the ground line carries only the free water above it, if any
 ///   sigma'_yy = sigma_yy + S_L p_L (Bishop, chi = S_L), sigma'_xx = sigma'_zz = K0 sigma'_yy
 /// and rho_L = rho_L0 exp(p_L/K_L) (4.13), M_L = n S_L rho_L V (4.47).

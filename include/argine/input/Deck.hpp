@@ -31,13 +31,15 @@ struct GeneratorSpec {
   enum class Kind { Rectangle, Polygon } kind = Kind::Rectangle;
   ElementType element = ElementType::Quad4;
   Real element_size = 0.1;  ///< target element edge length (m)
-  // Rectangle: [x_min, x_max] x [y_min, y_max], one block named `block`; sets
-  // "left", "right", "bottom", "top" (node sets and side sets of the same names).
+  // Rectangle: [x_min, x_max] x [y_min, y_max], one block named `block` (without regions);
+  // sets "left", "right", "bottom", "top" (node sets and side sets of the same names).
   std::array<Real, 2> lower_left{0.0, 0.0};
   std::array<Real, 2> upper_right{1.0, 1.0};
   std::string block = "soil";
-  // Polygon cross-section: soil regions (layers) inside a background box; the rest of the
-  // box becomes block "empty" (no material points, room for run-out).
+  // Soil regions (layers) inside the box; the rest of the box becomes block "empty" (no
+  // material points, room for run-out). Polygon: the elements follow the region edges.
+  // Rectangle (optional): the grid stays structured and each region's material is seeded
+  // at the pattern positions inside its polygon (meshio/RectangleRegions.hpp).
   std::vector<PolygonRegion> regions;
 };
 
@@ -60,7 +62,7 @@ struct InitialStateSpec {
 struct MaterialSpec {
   std::string name;
   std::string block;           ///< mesh element block holding this material
-  int points_per_element = 3;  ///< 1, 3, 4, 6 or 12
+  int points_per_element = 3;  ///< Tri3: 1, 3, 4, 6 or 12; Quad4: 1, 4, 9 or 16
   PhaseModel phase = PhaseModel::Saturated;
   Real porosity = 0.4;        ///< n0 (-)
   Real solid_density = 2650;  ///< rho_S (kg/m^3)

@@ -4,6 +4,7 @@
 /// element blocks (mapped to materials by name), node sets and side sets (mapped to
 /// boundary conditions by name). Read from Exodus II or made by a built-in generator.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,9 @@ KOKKOS_INLINE_FUNCTION constexpr int nodesPerElement(ElementType type) {
 const char* exodusName(ElementType type);
 
 /// A named group of elements; the deck maps block names to materials. Blocks with no
-/// material are initially empty (no material points) but still part of the grid.
+/// material are initially empty (no material points) but still part of the grid. In a
+/// mesh with regions (Mesh::regions) a block names cells for output only: a region's points
+/// may start in cells of another block, and none is seeded from the block's elements.
 struct ElementBlock {
   std::string name;           ///< block name (Exodus block name, or "block_<id>" if unnamed)
   int id = 0;                 ///< Exodus block id
@@ -63,6 +66,15 @@ enum class ShapeFamily {
   BSpline,  ///< quadratic B-splines on a StructuredGrid, boundary-modified at its edges
 };
 
+/// A soil region of a `rectangle` mesh with Regions, filled at point resolution: the
+/// material of block `block` is seeded at the pattern positions inside the polygon in every
+/// element the polygon touches, whatever the block of that element (points/Seeding.hpp;
+/// which region holds a position: mesh/MeshRegions.hpp).
+struct BlockRegion {
+  int block = 0;                                 ///< index into Mesh::blocks
+  std::vector<std::array<Real, kDim>> vertices;  ///< polygon corners, counter-clockwise (m)
+};
+
 /// Background mesh. Views live in MemSpace so kernels read them directly.
 struct Mesh {
   ElementType type = ElementType::Tri3;
@@ -80,6 +92,9 @@ struct Mesh {
   StructuredGrid structured;  ///< set by generateRectangle (Quad4); invalid otherwise
   /// The transfers' shape functions: Linear, or (on a structured grid) GIMP or B-spline.
   ShapeFamily shape_functions = ShapeFamily::Linear;
+  /// Regions of a `rectangle` with Regions, in deck order (the earlier region wins a
+  /// position on a shared edge); empty for every other mesh, whose blocks are seeded whole.
+  std::vector<BlockRegion> regions;
 
   int numNodes() const { return static_cast<int>(coordinates.extent(0)); }
   int numElements() const { return static_cast<int>(connectivity.extent(0)); }

@@ -1,7 +1,8 @@
 #pragma once
 /// @file MeshGenerators.hpp
-/// Built-in meshes (`Mesh/Generate`): a structured rectangle and a polygon cross-section
-/// (soil layers of a levee or slope inside a background box). Both name the box sides
+/// Built-in meshes (`Mesh/Generate`): a structured rectangle (optionally with soil regions
+/// seeded at point resolution) and a polygon cross-section (soil layers of a levee or slope
+/// inside a background box, the elements following the layer edges). Both name the box sides
 /// "left", "right", "bottom", "top" as node sets AND side sets (ids 1-4 in that order).
 
 #include <array>
@@ -19,8 +20,10 @@ Mesh generateMesh(const GeneratorSpec& spec);
 /// Structured grid over [lower_left, upper_right]: nx = ceil(width / element_size) by
 /// ny = ceil(height / element_size) quads (or each quad split into two triangles along
 /// alternating diagonals, so no direction is preferred), one block `spec.block` (id 1).
-/// Nodes are numbered row by row from the lower left (x fastest), elements likewise.
-/// Throws InputError for an empty box or a non-positive element size.
+/// Nodes are numbered row by row from the lower left (x fastest), elements likewise; for
+/// quads mesh.structured describes that grid. With `spec.regions` the grid is the same but
+/// the blocks are the regions' (RectangleRegions.hpp) and mesh.regions holds the polygons.
+/// Throws InputError for an empty box, a non-positive element size or bad regions.
 Mesh generateRectangle(const GeneratorSpec& spec);
 
 /// Unstructured mesh of the box with one block per distinct region block name (ids 1.., in

@@ -19,6 +19,20 @@
 /// det J(centre) x 4/m^2 (exact since det J is linear on a bilinear quad), equal to
 /// area / n for parallelograms and still summing to the element area when distorted.
 /// Quad4 with 3, 6 or 12 points is rejected: no symmetric pattern of equal sub-areas.
+///
+/// Regions (a `rectangle` mesh with Regions, Mesh::regions): a block that has regions is
+/// seeded from its polygons, not from its elements. In every element a polygon of the block
+/// touches, the pattern positions that the region rule (mesh/MeshRegions.hpp: first region
+/// in deck order whose closed polygon holds the position) gives to a region of the block
+/// become points, whatever the element's own block. So a 45-degree slope or a column whose
+/// width is not a multiple of the cell is represented at point resolution, and a position
+/// on an edge shared by two regions is seeded once. Each point keeps the volume of its
+/// pattern share (det J x reference sub-area, as above), not the part of its sub-square
+/// inside the polygon: the body's volume is the area of the sub-squares whose centres lie
+/// inside, which tends to the polygon's area as the pattern refines (the error is at most
+/// the sub-squares the outline crosses: about perimeter x sub-square side). Clipped volumes
+/// would match the area exactly but give points of any small volume along the outline
+/// (mass and time step then vary point by point), so they are not used.
 
 #include <string>
 #include <vector>
@@ -47,10 +61,12 @@ std::string supportedPointsPerElement(ElementType type);
 std::vector<Real> seedingPattern(ElementType type, int points_per_element,
                                  const std::string& where);
 
-/// Creates the points of all requests, sorted by element, ids 0..n-1 in that order.
-/// Fills id, element, local, position, initial_position, material, volume, initial_volume;
-/// all other fields are zero. Throws InputError for an unknown block index, an unsupported
-/// number of points or an element requested twice (a block given two materials).
+/// Creates the points of all requests, sorted by element, ids 0..n-1 in that order (within
+/// an element: a whole-element request's points, then region points by request and
+/// pattern position). Fills id, element, local, position, initial_position, material,
+/// volume, initial_volume; all other fields are zero. Throws InputError for an unknown block
+/// index, an unsupported number of points, a block given two materials, or a whole-element
+/// block (e.g. `empty`) sharing an element with region points.
 MaterialPoints seedMaterialPoints(const Mesh& mesh, const std::vector<SeedRequest>& requests);
 
 /// Sorts points by element (points outside the mesh, element -1, last), by id within an
