@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "BoundaryGeometry.hpp"
+#include "FrictionalWall.hpp"
 #include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
@@ -224,6 +225,9 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
                                 integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));
         break;
       }
+      case BoundaryKind::FrictionalWall:
+        boundary_detail::addFrictionalWall(mesh, spec, host, where, frictional_);
+        break;
       case BoundaryKind::TotalHead:  // on the moving boundary: HydraulicConditions
       case BoundaryKind::PressureSeries:
       case BoundaryKind::Infiltration:
@@ -233,6 +237,7 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
   }
   for (const auto& fixity : solid_fixities_) fixity.constrain(constraints_);
   for (const auto& boundary : impermeable_) boundary.constrain(constraints_);
+  frictional_.finalise(constraints_);  // takes the liquid locks of its nodes
   constraints_.finalise();
 }
 
