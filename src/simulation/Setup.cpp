@@ -1,5 +1,6 @@
 #include "argine/simulation/Setup.hpp"
 
+#include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/mesh/MeshGeometry.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
@@ -14,6 +15,12 @@ Mesh loadMesh(const Deck& deck) {
   const std::string source = deck.mesh.generate ? "Mesh/Generate" : deck.mesh.exodus_file;
   checkMeshQuality(mesh, source);
   checkDeckAgainstMesh(deck, mesh);
+  // Each explicit stage's conditions resolved once now, not when the stage begins: a
+  // condition the mesh's geometry cannot carry (an inclined impermeable side, a frictional
+  // node set without a wall normal) is then an input error before anything runs or is
+  // written, and `argine check` reports it.
+  for (const StageSpec& stage : deck.stages)
+    if (stage.solver != SolverKind::ImplicitSeepage) StageBoundaryConditions(mesh, stage);
   return mesh;
 }
 
