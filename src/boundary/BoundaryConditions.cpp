@@ -2,72 +2,23 @@
 
 #include <cmath>
 #include <map>
-#include <set>
 #include <sstream>
 
+#include "BoundaryGeometry.hpp"
+#include "FrictionalWall.hpp"
 #include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/Deck.hpp"
 #include "argine/mesh/Mesh.hpp"
-#include "argine/mesh/MeshGeometry.hpp"
 
 namespace argine {
 
 namespace {
 
-/// A straight side of the mesh: end nodes, length and outward unit normal.
-struct Side {
-  int a = 0, b = 0;
-  Real length = 0;
-  Real normal[kDim] = {0, 0};
-};
-
-/// Host copies of what the resolution needs.
-struct HostMesh {
-  Kokkos::View<Real* [kDim], MemSpace>::HostMirror coordinates;
-  Kokkos::View<int**, MemSpace>::HostMirror connectivity;
-  int per = 0;
-  explicit HostMesh(const Mesh& mesh)
-      : coordinates(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates)),
-        connectivity(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.connectivity)),
-        per(mesh.nodesPerElement()) {}
-
-  /// Side s of element e (local nodes s and s+1, counter-clockwise: outward normal is the
-  /// edge vector turned clockwise).
-  Side side(int e, int s) const {
-    Side side;
-    side.a = connectivity(e, s);
-    side.b = connectivity(e, (s + 1) % per);
-    const Real tx = coordinates(side.b, 0) - coordinates(side.a, 0);
-    const Real ty = coordinates(side.b, 1) - coordinates(side.a, 1);
-    side.length = std::sqrt(tx * tx + ty * ty);
-    side.normal[0] = ty / side.length;
-    side.normal[1] = -tx / side.length;
-    return side;
-  }
-};
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out.empty() ? "(none)" : out;
-}
-
-const NodeSet& requireNodeSet(const Mesh& mesh, const std::string& where, const std::string& name) {
-  const NodeSet* set = mesh.findNodeSet(name);
-  if (!set)
-    throw InputError(where, "node set '" + name + "' is not in the mesh; the mesh has node sets: " +
-                                joined(mesh.nodeSetNames()));
-  return *set;
-}
-
-const SideSet& requireSideSet(const Mesh& mesh, const std::string& where, const std::string& name) {
-  const SideSet* set = mesh.findSideSet(name);
-  if (!set)
-    throw InputError(where, "side set '" + name + "' is not in the mesh; the mesh has side sets: " +
-                                joined(mesh.sideSetNames()));
-  return *set;
-}
+using boundary_detail::HostMesh;
+using boundary_detail::requireNodeSet;
+using boundary_detail::requireSideSet;
+using boundary_detail::Side;
 
 /// The lock bit of an axis-aligned outward normal; InputError for an inclined side.
 unsigned lockBitOfNormal(const Side& side, const HostMesh& host, const std::string& where) {
@@ -83,12 +34,11 @@ unsigned lockBitOfNormal(const Side& side, const HostMesh& host, const std::stri
   throw InputError(where, out.str());
 }
 
-/// Per-node lock bits of an impermeable side set.
-std::map<int, unsigned> locksOfSideSet(const SideSet& set, const HostMesh& host,
-                                       const std::string& where) {
+/// Per-node lock bits of impermeable sides.
+std::map<int, unsigned> locksOfSides(const std::vector<Side>& sides, const HostMesh& host,
+                                     const std::string& where) {
   std::map<int, unsigned> locks;
-  for (std::size_t k = 0; k < set.elements.size(); ++k) {
-    const Side side = host.side(set.elements[k], set.sides[k]);
+  for (const Side& side : sides) {
     const unsigned bit = lockBitOfNormal(side, host, where);
     locks[side.a] |= bit;
     locks[side.b] |= bit;
@@ -100,19 +50,8 @@ std::map<int, unsigned> locksOfSideSet(const SideSet& set, const HostMesh& host,
 /// end nodes are both in the set.
 std::map<int, unsigned> locksOfNodeSet(const Mesh& mesh, const NodeSet& set, const HostMesh& host,
                                        const std::string& where) {
-  const std::set<int> members(set.nodes.begin(), set.nodes.end());
-  const auto neighbours =
-      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), computeElementNeighbours(mesh));
-  std::map<int, unsigned> locks;
-  for (int e = 0; e < mesh.numElements(); ++e)
-    for (int s = 0; s < host.per; ++s) {
-      if (neighbours(e, s) >= 0) continue;
-      const Side side = host.side(e, s);
-      if (!members.count(side.a) || !members.count(side.b)) continue;
-      const unsigned bit = lockBitOfNormal(side, host, where);
-      locks[side.a] |= bit;
-      locks[side.b] |= bit;
-    }
+  const std::map<int, unsigned> locks =
+      locksOfSides(boundary_detail::boundarySidesWithin(mesh, set, host), host, where);
   for (const int node : set.nodes)
     if (!locks.count(node)) {
       std::ostringstream out;
@@ -131,8 +70,7 @@ std::map<int, unsigned> locksOfNodeSet(const Mesh& mesh, const NodeSet& set, con
 NodalLoads integrateSideLoads(const SideSet& set, const HostMesh& host,
                               const std::array<Real, 2>& traction, Real pressure) {
   std::map<int, std::array<Real, 4>> sums;  // node -> mixture x, y, liquid x, y
-  for (std::size_t k = 0; k < set.elements.size(); ++k) {
-    const Side side = host.side(set.elements[k], set.sides[k]);
+  for (const Side& side : boundary_detail::sidesOf(set, host)) {
     const Real half = 0.5 * side.length;
     const Real mixture_pressure = mixtureLoadPressure(pressure);
     for (const int node : {side.a, side.b}) {
@@ -253,7 +191,9 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
       case BoundaryKind::LiquidFixity: {
         std::map<int, unsigned> locks;
         if (!spec.side_set.empty()) {
-          locks = locksOfSideSet(requireSideSet(mesh, where, spec.side_set), host, where);
+          locks = locksOfSides(
+              boundary_detail::sidesOf(requireSideSet(mesh, where, spec.side_set), host), host,
+              where);
         } else {
           const NodeSet& set = requireNodeSet(mesh, where, spec.node_set);
           if (spec.fix_x || spec.fix_y) {  // explicit directions win over the geometry
@@ -285,6 +225,9 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
                                 integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));
         break;
       }
+      case BoundaryKind::FrictionalWall:
+        boundary_detail::addFrictionalWall(mesh, spec, host, where, frictional_);
+        break;
       case BoundaryKind::TotalHead:  // on the moving boundary: HydraulicConditions
       case BoundaryKind::PressureSeries:
       case BoundaryKind::Infiltration:
@@ -294,6 +237,7 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
   }
   for (const auto& fixity : solid_fixities_) fixity.constrain(constraints_);
   for (const auto& boundary : impermeable_) boundary.constrain(constraints_);
+  frictional_.finalise(constraints_);  // takes the liquid locks of its nodes
   constraints_.finalise();
 }
 

@@ -17,6 +17,15 @@ void NodalConstraints::finalise() {
   Kokkos::deep_copy(flags_, flags);
 }
 
+unsigned NodalConstraints::take(int node, unsigned bits) {
+  const auto found = pending_.find(node);
+  if (found == pending_.end()) return 0u;
+  const unsigned taken = found->second & bits;
+  found->second &= ~bits;
+  if (found->second == 0) pending_.erase(found);  // nothing left to constrain there
+  return taken;
+}
+
 unsigned NodalConstraints::flagsOf(int node) const {
   const auto found = pending_.find(node);
   return found == pending_.end() ? 0u : found->second;

@@ -410,20 +410,44 @@ void addHydraulicBoundaryKeys(ListSchema& boundary) {
 }
 // ---------------------------------------------------------------- end hydraulic conditions
 
+/// A rigid wall with Coulomb friction (boundary/FrictionalContact.hpp, doc/theory.md Sec. 5.6).
+void addFrictionalWallKeys(ListSchema& boundary) {
+  const std::vector<std::string> wall{"frictional wall"};
+  boundary.add(KeySpec::real("Friction Coefficient (-)", "-",
+                             "Coulomb coefficient mu of the soil on the wall: 0 smooth, large "
+                             "rough (the soil still lifts off)")
+                   .atLeast(0)
+                   .when("Type", wall)
+                   .require());
+  boundary.add(KeySpec::reals("Normal", "-", 2,
+                              "node set only: outward normal of the soil, pointing into the "
+                              "wall (any length); default: from the mesh-boundary sides "
+                              "joining nodes of the set")
+                   .when("Type", wall));
+  boundary.add(KeySpec::boolean("Impermeable",
+                                "the wall holds the pore liquid: zero relative liquid velocity "
+                                "normal to it (false: the liquid drains through the wall)")
+                   .when("Type", wall)
+                   .byDefault(true));
+}
+
 ListSchema boundaryKeys() {
   ListSchema boundary;
   boundary.add(KeySpec::choice("Type", deckWords(kBoundaryWords),
                                "solid fixity (node set), impermeable (zero relative liquid "
-                               "velocity), traction, liquid pressure (side set)")
+                               "velocity), traction, liquid pressure (side set), frictional "
+                               "wall (Coulomb contact of the solid, side or node set)")
                    .require());
   boundary.add(KeySpec::text("Node Set", "mesh node set")
-                   .when("Type", {"solid fixity", "impermeable"})
+                   .when("Type", {"solid fixity", "impermeable", "frictional wall"})
                    .requireWhen("Type", {"solid fixity"}));
-  boundary.add(KeySpec::text("Side Set", "mesh side set")
-                   .when("Type", {"impermeable", "traction", "liquid pressure", "total head",
-                                  "pressure series", "infiltration", "seepage face"})
-                   .requireWhen("Type", {"traction", "liquid pressure"}));
-  boundary.exactlyOneOf({"Node Set", "Side Set"}, Condition{"Type", {"impermeable"}});
+  boundary.add(
+      KeySpec::text("Side Set", "mesh side set")
+          .when("Type", {"impermeable", "traction", "liquid pressure", "total head",
+                         "pressure series", "infiltration", "seepage face", "frictional wall"})
+          .requireWhen("Type", {"traction", "liquid pressure"}));
+  boundary.exactlyOneOf({"Node Set", "Side Set"},
+                        Condition{"Type", {"impermeable", "frictional wall"}});
   boundary.add(
       KeySpec::choice("Direction", deckWords(kDirectionWords), "velocity components held at zero")
           .when("Type", {"solid fixity"})
@@ -436,6 +460,7 @@ ListSchema boundaryKeys() {
   boundary.add(KeySpec::real("Pressure (Pa)", "Pa", "prescribed p_L (compression positive)")
                    .when("Type", {"liquid pressure"})
                    .require());
+  addFrictionalWallKeys(boundary);
   addHydraulicBoundaryKeys(boundary);
   return boundary;
 }

@@ -1,6 +1,7 @@
 #include "DeckParts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckWords.hpp"
@@ -230,6 +231,29 @@ HydraulicSpec parseHydraulic(const DeckSection& boundary, BoundaryKind kind) {
 }
 // ---------------------------------------------------------------- end hydraulic conditions
 
+/// The keys of a frictional wall; the wall normal of a node set, normalised.
+void parseFrictionalWall(const DeckSection& boundary, BoundarySpec& spec) {
+  if (boundary.has("Node Set")) spec.node_set = boundary.text("Node Set");
+  if (boundary.has("Side Set")) spec.side_set = boundary.text("Side Set");
+  spec.friction_coefficient = boundary.real("Friction Coefficient (-)");
+  spec.wall_impermeable = boundary.boolean("Impermeable");
+  if (!boundary.has("Normal")) return;
+  const std::string where = boundary.pathOf("Normal");
+  // A side set's normals come from its sides; a second, different source would be ambiguous.
+  if (!spec.side_set.empty())
+    throw InputError(where,
+                     "Normal is for a Node Set; a side set's wall normal comes from "
+                     "its sides (outward normal of the mesh)");
+  const std::array<Real, 2> normal = pair(boundary.reals("Normal"));
+  const Real length = std::hypot(normal[0], normal[1]);
+  if (!(length > 0) || !std::isfinite(length))
+    throw InputError(where,
+                     "expected a non-zero finite vector (the outward normal of the "
+                     "soil, pointing into the wall)");
+  spec.has_normal = true;
+  spec.normal = {normal[0] / length, normal[1] / length};
+}
+
 BoundarySpec parseBoundary(const DeckSection& boundary) {
   BoundarySpec spec;
   spec.name = boundary.name();
@@ -253,6 +277,9 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
     case BoundaryKind::LiquidPressure:
       spec.side_set = boundary.text("Side Set");
       spec.pressure = boundary.real("Pressure (Pa)");
+      break;
+    case BoundaryKind::FrictionalWall:
+      parseFrictionalWall(boundary, spec);
       break;
     case BoundaryKind::TotalHead:
     case BoundaryKind::PressureSeries:

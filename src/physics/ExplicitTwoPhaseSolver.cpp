@@ -17,6 +17,7 @@
 #include "argine/physics/PointInitialisation.hpp"
 #include "argine/physics/PointUpdates.hpp"
 #include "argine/physics/StabilityCheck.hpp"
+#include "argine/physics/WallContact.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/points/Seeding.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
@@ -230,10 +231,10 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
     applyHydraulicLoads();  // Sec. 4: free boundary, 4.51, head 4.50 / pressure loads
   });
   timed(StepPhase::NodalSolve, [&] {
-    solveLiquidMomentum();                  // step 1 (4.36)
-    solveMixtureMomentum();                 // step 2 (4.37)
-    applyAccelerationBoundaryConditions();  // fixities, impermeable boundaries
-    correctHydraulicAccelerations(dt);      // infiltration, seepage face (4.53-4.59)
+    solveLiquidMomentum();                    // step 1 (4.36)
+    solveMixtureMomentum();                   // step 2 (4.37)
+    applyAccelerationBoundaryConditions(dt);  // fixities, impermeable boundaries, walls
+    correctHydraulicAccelerations(dt);        // infiltration, seepage face (4.53-4.59)
   });
   timed(StepPhase::G2PVelocity, [&] { updatePointVelocities(dt); });  // step 3 (7.10, 7.11)
   timed(StepPhase::NodalSolve, [&] { updateNodalVelocities(); });     // step 4
@@ -348,7 +349,7 @@ void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
                                         correction_locks_);
   // Fixities and impermeable directions win over the correction at a node that has both:
   // the fixity's reaction takes the solid part, the impermeable lock the liquid part.
-  applyAccelerationBoundaryConditions();
+  applyAccelerationBoundaryConditions(dt);
 }
 
 void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
@@ -375,8 +376,18 @@ void ExplicitTwoPhaseSolver::solveMixtureMomentum() {
   argine::solveMixtureMomentum(nodes_in_use_, momentum_, grid_);
 }
 
-void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions() {
+void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions(Real dt) {
   constrainAccelerations(boundaries_.constraints(), momentum_, grid_);
+  // The walls after the fixities: a fixity of a wall node wins there component by component.
+  // Completed sums at a shared node give every rank holding it the same contact.
+  constrainWallContactAccelerations(boundaries_.frictionalContact(), momentum_, dt, grid_);
+}
+
+void ExplicitTwoPhaseSolver::applyVelocityBoundaryConditions() {
+  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
+  boundaries_.frictionalContact().constrainVelocities(
+      grid_.mass_solid_i, grid_.mass_liquid_i, grid_.velocity_solid_i, grid_.velocity_liquid_i,
+      momentum_.liquid_with_solid);
 }
 
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
@@ -415,12 +426,12 @@ void ExplicitTwoPhaseSolver::constrainNodalVelocities() {
            .liquid_with_solid) {  // the relative flux of the mass balance is the prescribed one
     // constrained first, as the accelerations were: the correction measures the flux of the
     // constrained velocities (a lock across the face normal would change it afterwards)
-    boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
+    applyVelocityBoundaryConditions();
     correctHydraulicVelocities(hydraulic_.corrections(), boundary_fields_,
                                !momentum_.fixed_skeleton, reference_liquid_density_, grid_,
                                correction_locks_);
   }
-  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
+  applyVelocityBoundaryConditions();
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {

@@ -1,5 +1,6 @@
 #include "argine/simulation/Setup.hpp"
 
+#include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/mesh/MeshGeometry.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
@@ -15,6 +16,12 @@ Mesh loadMesh(const Deck& deck) {
   checkMeshQuality(mesh, source);
   mesh.shape_functions = deck.mesh.shape_functions;  // checkMeshSpec: on a structured grid
   checkDeckAgainstMesh(deck, mesh);
+  // Each explicit stage's conditions resolved once now, not when the stage begins: a
+  // condition the mesh's geometry cannot carry (an inclined impermeable side, a frictional
+  // node set without a wall normal) is then an input error before anything runs or is
+  // written, and `argine check` reports it.
+  for (const StageSpec& stage : deck.stages)
+    if (stage.solver != SolverKind::ImplicitSeepage) StageBoundaryConditions(mesh, stage);
   return mesh;
 }
 

@@ -170,7 +170,8 @@ TEST(DeckValidation, BoundaryConditionsNeedTheirSetAndValues) {
   expectDeckError(replaced(kBaseDeck, base, "base: {Type: traction, Traction (Pa): [0.0, -1.0]}"),
                   path + "/Side Set", "required when Type is traction or liquid pressure");
   expectDeckError(replaced(kBaseDeck, base, "base: {Type: liquid pressure, Node Set: bottom}"),
-                  path + "/Node Set", "applies only when Type is solid fixity or impermeable");
+                  path + "/Node Set",
+                  "applies only when Type is solid fixity or impermeable or frictional wall");
   expectDeckError(replaced(kBaseDeck, base, "base: {Type: impermeable}"), path,
                   "give exactly one of 'Node Set' or 'Side Set' when Type is impermeable");
   expectDeckError(

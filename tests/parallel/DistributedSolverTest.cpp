@@ -216,6 +216,24 @@ TEST(DistributedSolver, CollapsingSlopeMigratesPointsAndMatchesOneRank) {
   expectSlopeAsOneRank(slumpingSlope(0.0), kRoundOff);
 }
 
+TEST(DistributedSolver, SlopeSlidingOnFrictionalWallsMatchesOneRank) {
+  // The same slope on frictional walls (doc/theory.md Sec. 5.6): an impermeable floor (mu =
+  // 0.4) and a permeable left wall (mu = 0.2), a held corner where they meet. The contact is
+  // per node on completed sums, so the ranks sharing the cut's nodes agree.
+  Scene scene = slumpingSlope(0.0);
+  BoundarySpec floor, wall;
+  floor.name = "floor";
+  floor.kind = wall.kind = BoundaryKind::FrictionalWall;
+  floor.side_set = "bottom";
+  floor.friction_coefficient = 0.4;
+  wall.name = "wall";
+  wall.side_set = "left";
+  wall.friction_coefficient = 0.2;
+  wall.wall_impermeable = false;
+  scene.stages[0].boundaries = {floor, wall};
+  expectSlopeAsOneRank(scene, kRoundOff);
+}
+
 // ---- Reproducible sums (transfer/CompensatedSum.hpp): the same scenes, and the damped
 // stage, give the one-rank answer bit for bit.
 

@@ -12,6 +12,10 @@
 ///    edge shape functions (each end node of a side gets t L / 2) into the MIXTURE external
 ///    force (4.42): the thesis loads the mixture with the total traction, the liquid sees a
 ///    loaded surface only through a prescribed pressure;
+///  - FrictionalContact: rigid walls with Coulomb friction on side or node sets
+///    (FrictionalContact.hpp): the solid cannot enter the wall and slides along it against
+///    mu times the normal force; the liquid's relative velocity normal to an impermeable wall
+///    is zero;
 ///  - LiquidPressureBoundary: a prescribed liquid pressure p^ (compression positive) on a
 ///    side set: nodal force -p^ n L / 2 per end node (n the outward normal) in the liquid
 ///    (4.41) external force, and -max(p^, 0) n L / 2 in the mixture (4.42) external force
@@ -29,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "argine/boundary/FrictionalContact.hpp"
 #include "argine/boundary/NodalConstraints.hpp"
 #include "argine/core/Types.hpp"
 
@@ -116,11 +121,14 @@ class StageBoundaryConditions {
   StageBoundaryConditions() = default;
   /// Resolves each BoundarySpec of `stage`; throws InputError with where =
   /// "Stages/<stage>/Boundary Conditions/<name>" for a missing node/side set or an inclined
-  /// impermeable side.
+  /// impermeable side, ".../<name>/Node Set" for a frictional node set without a wall normal.
   StageBoundaryConditions(const Mesh& mesh, const StageSpec& stage);
 
-  /// The velocity constraints of all fixities and impermeable boundaries.
+  /// The velocity constraints of all fixities and impermeable boundaries (except the liquid
+  /// locks at frictional-wall nodes, which frictionalContact() applies).
   const NodalConstraints& constraints() const { return constraints_; }
+  /// The nodes of all frictional walls.
+  const FrictionalContact& frictionalContact() const { return frictional_; }
 
   /// Adds the tractions and liquid pressures at `time` (see the classes).
   void addNodalForces(Real time, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
@@ -142,6 +150,7 @@ class StageBoundaryConditions {
   std::vector<TractionBoundary> tractions_;
   std::vector<LiquidPressureBoundary> pressures_;
   NodalConstraints constraints_;
+  FrictionalContact frictional_;
 };
 
 }  // namespace argine

@@ -38,6 +38,10 @@ class NodalConstraints {
  public:
   /// Adds `bits` to node `node` (host side, while the stage's conditions are resolved).
   void add(int node, unsigned bits) { pending_[node] |= bits; }
+  /// Removes `bits` from `node` (host side, before finalise()) and returns those of them
+  /// that were set: a frictional wall applies the liquid locks of its nodes itself, after
+  /// its contact (FrictionalContact::finalise).
+  unsigned take(int node, unsigned bits);
   /// Copies the collected constraints into the device lists; call once after the adds.
   void finalise();
 

@@ -135,6 +135,7 @@ enum class BoundaryKind {
   LiquidFixity,    ///< zero relative liquid velocity (impermeable) on a side or node set
   Traction,        ///< total traction vector on a side set (Pa)
   LiquidPressure,  ///< prescribed liquid pressure on a side set (Pa)
+  FrictionalWall,  ///< rigid wall with Coulomb friction on a side or node set (solid contact)
   // Hydraulic conditions on the moving free boundary (thesis Sec. 4.1-4.3), see below.
   TotalHead,       ///< total head H(t) (4.50) on a zone of the free boundary or a side set
   PressureSeries,  ///< prescribed liquid pressure p(t) on a zone or a side set
@@ -201,6 +202,11 @@ struct BoundarySpec {
   std::array<Real, 2> traction{0.0, 0.0};  ///< (Pa), tension positive along the outward normal
   Real pressure = 0;                       ///< prescribed p_L (Pa, compression positive)
   HydraulicSpec hydraulic;                 ///< TotalHead, PressureSeries, Infiltration, ...
+  // FrictionalWall (boundary/FrictionalContact.hpp):
+  Real friction_coefficient = 0;         ///< Coulomb mu >= 0 (0: smooth wall)
+  bool has_normal = false;               ///< node set: `normal` given instead of the mesh geometry
+  std::array<Real, 2> normal{0.0, 0.0};  ///< unit outward normal of the soil (into the wall)
+  bool wall_impermeable = true;          ///< zero relative liquid velocity normal to the wall
 };
 
 // ---- stages: relaxation and material changes (issue P4) ----

@@ -88,10 +88,15 @@ inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
 };
 
 inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
-    {"solid fixity", BoundaryKind::SolidFixity},  {"impermeable", BoundaryKind::LiquidFixity},
-    {"traction", BoundaryKind::Traction},         {"liquid pressure", BoundaryKind::LiquidPressure},
-    {"total head", BoundaryKind::TotalHead},      {"pressure series", BoundaryKind::PressureSeries},
-    {"infiltration", BoundaryKind::Infiltration}, {"seepage face", BoundaryKind::SeepageFace},
+    {"solid fixity", BoundaryKind::SolidFixity},
+    {"impermeable", BoundaryKind::LiquidFixity},
+    {"traction", BoundaryKind::Traction},
+    {"liquid pressure", BoundaryKind::LiquidPressure},
+    {"total head", BoundaryKind::TotalHead},
+    {"pressure series", BoundaryKind::PressureSeries},
+    {"infiltration", BoundaryKind::Infiltration},
+    {"seepage face", BoundaryKind::SeepageFace},
+    {"frictional wall", BoundaryKind::FrictionalWall},
 };
 
 inline constexpr DeckWord<ZoneSpec::Kind> kZoneWords[] = {

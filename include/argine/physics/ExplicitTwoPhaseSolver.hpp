@@ -10,15 +10,17 @@
 ///                               pressure loads into f_L^ext and f^ext
 ///   solveLiquidMomentum         step 1: a_L from 4.36
 ///   solveMixtureMomentum        step 2: a_S from 4.37
-///   applyAccelerationBoundaryConditions   fixities, impermeable boundaries
+///   applyAccelerationBoundaryConditions   fixities, impermeable boundaries, frictional walls
+///                               (Coulomb contact of the solid, WallContact.hpp)
 ///   correctHydraulicAccelerations   infiltration / seepage face predictor-corrector
 ///                               (4.53-4.59)
 ///   updatePointVelocities       step 3: v_p += dt sum N a (7.10, 7.11; FLIP) or, with APIC,
 ///                               v_p and C_p from the grid's v + dt a (conditions imposed),
 ///                               and the remap of the new point momenta to the nodes, in one
 ///                               pass
-///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs, the
-///                               infiltration / seepage corrections re-imposed
+///   updateNodalVelocities       step 4: nodal v^{k+1} = momentum / mass, velocity BCs (the
+///                               walls' contact in velocity form too), the infiltration /
+///                               seepage corrections re-imposed
 ///   computeStrainIncrements     step 4: d eps, spin, div v_L, advective term at the points;
 ///                               volumetric averaging of d eps if a material asks for it;
 ///                               the donor limit of the outflow at dry points
@@ -258,8 +260,9 @@ class ExplicitTwoPhaseSolver {
   bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum();
   void solveMixtureMomentum();
-  void applyAccelerationBoundaryConditions();
+  void applyAccelerationBoundaryConditions(Real dt);
   void correctHydraulicAccelerations(Real dt);
+  void applyVelocityBoundaryConditions();  // of updateNodalVelocities
   void updatePointVelocities(Real dt);
   void updateNodalVelocities();
   void constrainNodalVelocities();  // velocity conditions and hydraulic corrections

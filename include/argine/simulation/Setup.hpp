@@ -11,7 +11,8 @@
 namespace argine {
 
 /// Reads or generates the mesh of `deck`, checks element quality and that every block and
-/// set the deck names exists.
+/// set the deck names exists, and resolves the boundary conditions of every explicit stage
+/// (StageBoundaryConditions) so that a condition the mesh cannot carry fails here.
 Mesh loadMesh(const Deck& deck);
 
 /// Seeds `Points Per Element` points in every element of each material's block.
