@@ -106,6 +106,49 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v,
   store(v.points.mass_liquid, p, mass);
 }
 
+/// The opening of a return to the apex: the part of the step's volumetric strain that the
+/// stress did not follow elastically, d eps_vol - (p' after - p' before) / K, K = lambda +
+/// 2 G / 3 (p' the mean effective stress, rotation excluded: it keeps the trace). The trial
+/// lay beyond the apex, where the material carries no more tension: this is the point
+/// separating from its neighbours (a crack, grains parting), not a strain of its own skeleton.
+KOKKOS_INLINE_FUNCTION Real openingAtApex(const SolidConstants& constants,
+                                          const Real dstrain[kStressComponents], Real mean_before,
+                                          Real mean_after) {
+  const Real bulk = constants.lambda + 2 * constants.shear_modulus / 3;
+  const Real volumetric = dstrain[XX] + dstrain[YY] + dstrain[ZZ];
+  return volumetric - (mean_after - mean_before) / bulk;
+}
+
+/// Step 6 corrected at a return to the apex: the opening (openingAtApex) is space between the
+/// points, not porosity, so the point keeps the volume its stress followed: V <- V (1 + d
+/// eps_vol - opening) / (1 + d eps_vol), n again from (1 - n) V = const. Without it an open
+/// point's porosity ratchets up (opening is free, closing again costs elastic stress):
+/// points at the surface of a psi = 0 collapse reached n = 0.99 and the whole body +17 to
+/// +72 % of volume, and their light weight cut the time step tenfold (doc/theory.md). Dry
+/// and unsaturated points (air fills the opening; an unsaturated point's content, and so its
+/// p_L, stays that of its own pores); a saturated point draws water into it, its dilation is
+/// the liquid's business (4.12) and stays.
+KOKKOS_INLINE_FUNCTION void separateAtApex(const PointUpdateViews& v, int p,
+                                           const PointMaterial& material, Real opening) {
+  if (!(opening > 0) || material.phase == PhaseModel::Saturated) return;
+  const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
+                          v.rates.strain_increment_p(p, ZZ);
+  const Real ratio = (1 + volumetric - opening) / (1 + volumetric);  // kept / kinematic
+  v.points.volume(p) *= ratio;
+  v.points.porosity(p) = 1 - (1 - v.points.porosity(p)) / ratio;
+  if (material.phase != PhaseModel::Unsaturated) return;
+  if (v.hold_liquid_pressure) {  // drained, as updateLiquidPressure: the mass follows n V
+    v.points.mass_liquid(p) = v.points.porosity(p) * v.points.saturation(p) *
+                              v.points.density_liquid(p) * v.points.volume(p);
+    return;
+  }
+  // the same liquid mass in the smaller pore volume: p_L from the content again (4.12)
+  const Real content = v.points.mass_liquid(p) / (v.points.porosity(p) * v.points.volume(p));
+  const Real next = pressureOfLiquidContent(material, content, v.points.pressure_liquid(p));
+  v.points.pressure_liquid(p) = next;
+  v.points.density_liquid(p) = liquidDensity(material.liquid, next);
+}
+
 /// Equivalent deviatoric strain sqrt(2/3 e:e) of a plane-strain strain (tensor shear), of one
 /// point (Real) or kLanes points (Lanes).
 template <class T>
@@ -131,6 +174,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
     strain[c] = v.points.strain(p, c) + dstrain[c];
   }
   rotateStressBySpin(v.rates.spin_increment_p(p), stress);
+  const Real mean_before = (stress[XX] + stress[YY] + stress[ZZ]) / 3;
   Real plastic_strain = v.points.plastic_strain(p);
   int plastic_state = v.points.plastic_state(p);
   updateEffectiveStress(material.solid, material.solid_constants, suction, dstrain, stress,
@@ -142,6 +186,10 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
   v.points.plastic_strain(p) = plastic_strain;
   v.points.plastic_state(p) = plastic_state;
   v.points.deviatoric_strain(p) = equivalentDeviatoricStrain(strain);
+  if (plastic_state == kPlasticStateApex)
+    separateAtApex(v, p, material,
+                   openingAtApex(material.solid_constants, dstrain, mean_before,
+                                 (stress[XX] + stress[YY] + stress[ZZ]) / 3));
 }
 
 /// Step 6, state variables: S_L and k from the SWRC/HCC at the new pressure (unsaturated) or
