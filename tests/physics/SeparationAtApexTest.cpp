@@ -1,6 +1,7 @@
 // [Plasticity][LargeDeformation] A return to the Mohr-Coulomb apex separates a point from its
-// neighbours: the opening is not porosity (PointUpdates.hpp: openingAtApex, separateAtApex).
-// Hand-computed single points, then a psi = 0 collapse that keeps its volume and its time step.
+// neighbours: the opening is not porosity (PointUpdates.hpp: separationOpening,
+// separateFromNeighbours). Hand-computed single points, then a psi = 0 collapse that keeps its
+// volume and its time step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,6 +50,7 @@ MaterialPoints updateOnePoint(const MaterialSpec& material, Real dxx, Real dyy, 
   rates.strain_increment_p(0, XX) = dxx;
   rates.strain_increment_p(0, YY) = dyy;
   const PointUpdateViews v{table.materials(), points, rates, false};
+  closeSeparation(v, 0);
   updatePorosityAndVolume(v, 0);
   updateLiquidPressure(v, 0);
   updateEffectiveStress(v, 0);
@@ -62,7 +64,7 @@ TEST(SeparationAtApex, OpeningIsTheVolumetricStrainTheStressDidNotFollow) {
   // 8.5e-3.
   SolidConstants constants = solidConstants(sand(PhaseModel::Dry).solid);
   const Real dstrain[kStressComponents] = {6e-3, 4e-3, 0, 1e-3};
-  EXPECT_NEAR(openingAtApex(constants, dstrain, -1e3, 0.0), 1e-2 - 1.5e-3, 1e-15);
+  EXPECT_NEAR(separationOpening(constants, dstrain, -1e3, 0.0), 1e-2 - 1.5e-3, 1e-15);
 }
 
 TEST(SeparationAtApex, ADryPointPulledApartKeepsTheVolumeItsStressFollowed) {
@@ -74,6 +76,70 @@ TEST(SeparationAtApex, ADryPointPulledApartKeepsTheVolumeItsStressFollowed) {
   EXPECT_NEAR(p.volume(0), 1e-4 * (1 + 1.5e-3), 1e-15);
   EXPECT_NEAR(p.porosity(0), 1 - 0.6 / (1 + 1.5e-3), 1e-14);
   for (int c : {XX, YY, ZZ}) EXPECT_NEAR(p.stress_effective(0, c), 0.0, 1e-9);
+}
+
+TEST(SeparationAtApex, APointCrackingAtTheTensionCutOffKeepsTheVolumeItsStressFollowed) {
+  // c = 2 kPa, phi 30: apex c cot phi = 3.46 kPa above the cut-off sigma_t = 0. From p' =
+  // -1 kPa, d eps_xx = 1e-2 alone: the trial sigma_xx = -1e3 + (lambda + 2G) 1e-2 > 0 returns
+  // to the cut-off face (a crack normal to x), a kPlasticStateTension return; the point keeps
+  // V (1 + (p' after - p' before) / K) and not the kinematic 1 + 1e-2.
+  MaterialSpec material = sand(PhaseModel::Dry);
+  material.solid.cohesion = 2e3;
+  material.solid.tensile_strength = 0;
+  const MaterialPoints p = updateOnePoint(material, 1e-2, 0, 0);
+  EXPECT_EQ(p.plastic_state(0), kPlasticStateTension);
+  const Real bulk = 1e6 / 1.5;
+  const Real mean =
+      (p.stress_effective(0, XX) + p.stress_effective(0, YY) + p.stress_effective(0, ZZ)) / 3;
+  EXPECT_NEAR(p.stress_effective(0, XX), 0.0, 1e-6);
+  EXPECT_NEAR(p.volume(0), 1e-4 * (1 + (mean + 1e3) / bulk), 1e-15);
+  EXPECT_LT(p.volume(0), 1e-4 * (1 + 2e-3));
+}
+
+TEST(SeparationAtApex, AnUnsaturatedCrackAtTheCutOffStaysAirFilledPoreSpace) {
+  // The cut-off case of APointCrackingAtTheTensionCutOff... on an unsaturated point: the
+  // crack is air-filled pore space of the point (keepsOpeningOut): the kinematic volume.
+  MaterialSpec material = sand(PhaseModel::Unsaturated);
+  material.solid.cohesion = 2e3;
+  material.solid.tensile_strength = 0;
+  const MaterialPoints p = updateOnePoint(material, 1e-2, 0, -5e3);
+  EXPECT_EQ(p.plastic_state(0), kPlasticStateTension);
+  EXPECT_NEAR(p.volume(0), 1e-4 * (1 + 1e-2), 1e-15);
+  EXPECT_EQ(p.separation(0), 0.0);
+}
+
+TEST(SeparationAtApex, APointThatOpenedClosesItsGapBeforeItCompresses) {
+  // Pulled apart (gap 8.5e-3, ADryPointPulledApart...), then compressed by 2 x -3e-3: the
+  // -6e-3 close the gap (2.5e-3 of it left), the point's volume and stress do not change.
+  // A further -2 x 3e-3 closes the rest (2.5e-3) and compresses the point by the remaining
+  // 3.5e-3, isotropically in the plane: V = V_open (1 - 3.5e-3), p' = -K 3.5e-3 ... from 0.
+  MaterialSpec material = sand(PhaseModel::Dry);
+  MaterialPoints points = updateOnePoint(material, 5e-3, 5e-3, 0);
+  const Real volume_open = points.volume(0);
+  EXPECT_NEAR(points.separation(0), 8.5e-3, 1e-15);
+  const MaterialTable table({material});
+  PointRates rates;
+  rates.allocate(1);
+  const PointUpdateViews v{table.materials(), points, rates, false};
+  auto compress = [&] {
+    rates.strain_increment_p(0, XX) = -3e-3;
+    rates.strain_increment_p(0, YY) = -3e-3;
+    closeSeparation(v, 0);
+    updatePorosityAndVolume(v, 0);
+    updateEffectiveStress(v, 0);
+  };
+  compress();
+  EXPECT_NEAR(points.separation(0), 2.5e-3, 1e-15);
+  EXPECT_NEAR(points.volume(0), volume_open, 1e-18);
+  for (int c : {XX, YY, ZZ}) EXPECT_NEAR(points.stress_effective(0, c), 0.0, 1e-9);
+  compress();
+  EXPECT_EQ(points.separation(0), 0.0);
+  EXPECT_NEAR(points.volume(0), volume_open * (1 - 3.5e-3), 1e-16);
+  const Real bulk = 1e6 / 1.5;
+  const Real mean = (points.stress_effective(0, XX) + points.stress_effective(0, YY) +
+                     points.stress_effective(0, ZZ)) /
+                    3;
+  EXPECT_NEAR(mean, -bulk * 3.5e-3, 1e-6 * bulk * 3.5e-3);
 }
 
 TEST(SeparationAtApex, AnElasticOrShearedPointFollowsItsKinematicVolume) {
