@@ -121,6 +121,19 @@ struct GridShapesAt {
   KOKKOS_INLINE_FUNCTION Real nodal(const Values& values_i, int a, int slot) const {
     return values_i(node(a), slot);
   }
+  /// The weights of the centre of the point's cell on the stencil (cellCentreWeights1D).
+  KOKKOS_INLINE_FUNCTION void centreWeights(Real w[kGridStencilNodes],
+                                            Real g[kGridStencilNodes][kDim]) const {
+    Real wx[kGridStencil], wy[kGridStencil], sx[kGridStencil], sy[kGridStencil];
+    cellCentreWeights1D(shape, 0, wx, sx);
+    cellCentreWeights1D(shape, 1, wy, sy);
+    for (int a = 0; a < kGridStencilNodes; ++a) {
+      const int ax = a % kGridStencil, ay = a / kGridStencil;
+      w[a] = wx[ax] * wy[ay];
+      g[a][0] = sx[ax] * wy[ay];
+      g[a][1] = wx[ax] * sy[ay];
+    }
+  }
 };
 
 /// Point l's part of v: v itself for one point (a value or a bool), lane l for Lanes.

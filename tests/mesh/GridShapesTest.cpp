@@ -187,5 +187,48 @@ TEST(GridShapes, TensorShapeOfAPointOnTheGrid) {
   EXPECT_DOUBLE_EQ(gimpHalfWidth(1.0, grid), 0.5);  // at most half a cell
 }
 
+TEST(GridShapes, CellCentreWeightsAreOneHalfOnTheCellsTwoLinesIncludingTheEdgeCells) {
+  // Hand values on 5 cells of 1 m (and on one cell): the cell of xi, its two lines 1/2 each;
+  // a folded ghost slot repeats its neighbour's line and gets nothing.
+  struct Case {
+    int cells;
+    Real xi;
+    Real expected[kGridStencil];
+  };
+  const Case cases[] = {
+      {5, 2.3, {0, 0.5, 0.5}},  // base floor(1.8) = 1: lines 1 2 3, cell 2
+      {5, 2.7, {0.5, 0.5, 0}},  // base 2: lines 2 3 4, cell 2
+      {5, 0.2, {0, 0.5, 0.5}},  // base -1: lines [0] 0 1 (ghost folded), cell 0
+      {5, 4.8, {0.5, 0.5, 0}},  // base 4: lines 4 5 [5], cell 4
+      {1, 0.7, {0.5, 0.5, 0}},  // one cell: lines 0 1 [1]
+      {1, 0.3, {0, 0.5, 0.5}},  // one cell: lines [0] 0 1
+  };
+  for (const ShapeFamily family : {ShapeFamily::BSpline, ShapeFamily::Gimp})
+    for (const Case& c : cases) {
+      StructuredGrid grid;
+      grid.cells[0] = grid.cells[1] = c.cells;
+      grid.spacing[0] = grid.spacing[1] = 1;
+      const Real x[kDim] = {c.xi, c.xi};
+      TensorShape t;
+      tensorShape(family, grid, x, 0.25, t);
+      for (int d = 0; d < kDim; ++d) {
+        Real w[kGridStencil];
+        cellCentreWeights1D(t, d, w);
+        for (int k = 0; k < kGridStencil; ++k)
+          EXPECT_EQ(w[k], c.expected[k]) << "xi " << c.xi << " cells " << c.cells << " slot " << k;
+      }
+      // and they are the family's own values at the cell centre (the ghost has none there)
+      const Real centre[kDim] = {std::floor(c.xi) + 0.5, std::floor(c.xi) + 0.5};
+      TensorShape at_centre;
+      tensorShape(family, grid, centre, 0.25, at_centre);
+      Real w[kGridStencil];
+      cellCentreWeights1D(t, 0, w);
+      for (int k = 0; k < kGridStencil; ++k)
+        for (int j = 0; j < kGridStencil; ++j)
+          if (at_centre.line[0][j] == t.line[0][k] && at_centre.value[0][j] > 0 && w[k] > 0)
+            EXPECT_NEAR(at_centre.value[0][j], w[k], 1e-14);
+    }
+}
+
 }  // namespace
 }  // namespace argine

@@ -135,6 +135,33 @@ KOKKOS_INLINE_FUNCTION void tensorShape(ShapeFamily family, const StructuredGrid
   }
 }
 
+/// The weights of the centre of the point's cell on the stencil lines of axis d: 1/2 on the
+/// cell's two lines, 0 on the third. Both families take 1/2, 1/2 at a cell centre (the
+/// B-spline's third line is 1.5 cells away; uGIMP is linear there), also in an edge cell,
+/// whose ghost line has no weight at its centre. The cell is that of xi = sum_k N_k line_k
+/// (both families reproduce linear fields, and the fold keeps that); a folded ghost slot
+/// repeats its neighbour's line and gets nothing. Used where a value must be one per cell,
+/// as the element centre is for linear shapes (the advective flux of 4.16).
+KOKKOS_INLINE_FUNCTION void cellCentreWeights1D(const TensorShape& t, int d, Real w[kGridStencil],
+                                                Real* slope = nullptr) {
+  Real xi = 0;
+  for (int k = 0; k < kGridStencil; ++k) xi += t.value[d][k] * t.line[d][k];
+  const int first = t.line[d][0] == t.line[d][1] ? 1 : 0;  // a folded lower ghost
+  const int last = t.line[d][2] == t.line[d][1] ? 1 : 2;   // a folded upper ghost
+  int cell = static_cast<int>(Kokkos::Experimental::floor(xi));
+  if (cell > t.line[d][last] - 1) cell = t.line[d][last] - 1;
+  if (cell < t.line[d][first]) cell = t.line[d][first];
+  // d/dx at the centre: -1/h, +1/h on the cell's lines (1/h = sum_k dN_k/dx line_k)
+  Real inverse_h = 0;
+  for (int k = 0; k < kGridStencil; ++k) inverse_h += t.gradient[d][k] * t.line[d][k];
+  for (int k = 0; k < kGridStencil; ++k) {
+    const int line = t.line[d][k];
+    const bool in_cell = k >= first && k <= last && (line == cell || line == cell + 1);
+    w[k] = in_cell ? Real(0.5) : Real(0);
+    if (slope) slope[k] = !in_cell ? Real(0) : line == cell ? -inverse_h : inverse_h;
+  }
+}
+
 /// uGIMP half-width (cells) of a point of initial volume V0 on cells of area hx hy: the
 /// domain of a point seeded m x m per cell is a cell scaled by 1/m, l = 1/(2m) =
 /// sqrt(V0 / (hx hy)) / 2, at most 1/2 (one point per cell).
