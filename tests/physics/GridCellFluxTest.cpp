@@ -6,66 +6,18 @@
 
 #include <cmath>
 
-#include "Harness.hpp"
-#include "argine/transfer/ActiveNodes.hpp"
-#include "argine/transfer/GridFields.hpp"
-#include "argine/transfer/NodeRecords.hpp"
-#include "argine/transfer/PointRates.hpp"
-#include "argine/transfer/PointShapes.hpp"
-#include "argine/transfer/TwoPhaseTransfer.hpp"
+#include "WetPointsFlux.hpp"
 
 namespace argine {
 namespace {
 
-using test::hostCopy;
-
-/// Four saturated points (2 x 2, as seeded) in cell (2, 2) of a
-/// 5 x 5 grid of 1 m cells on `family`, the solid at rest and the liquid velocity a quadratic
-/// field v_L = (0, 1e-3 y^2) with a content c = rho_L n S_L that the P2G gives; their flux
-/// increments over dt = 1e-3 s.
+/// Four saturated points (2 x 2, as seeded) in cell (2, 2) of a 5 x 5 grid of 1 m cells on
+/// `family`, the liquid velocity a quadratic field v_L = (0, 1e-3 y^2): their flux increments.
 PointRates fluxesOfOneCell(ShapeFamily family) {
-  Mesh mesh = test::rectangleMesh(5, 5, 5.0, 5.0, ElementType::Quad4);
-  mesh.structured.cells[0] = mesh.structured.cells[1] = 5;
-  mesh.structured.spacing[0] = mesh.structured.spacing[1] = 1;
-  mesh.shape_functions = family;
-  MaterialPoints points;
-  points.allocate(4);
-  const Real offsets[2] = {0.25, 0.75};
-  for (int p = 0; p < points.count; ++p) {
-    points.element(p) = 12;  // cell (2, 2)
-    points.local(p, 0) = 2 * offsets[p % 2] - 1;
-    points.local(p, 1) = 2 * offsets[p / 2] - 1;
-    points.position(p, 0) = 2 + offsets[p % 2];
-    points.position(p, 1) = 2 + offsets[p / 2];
-    points.volume(p) = points.initial_volume(p) = 0.25;
-    points.mass_solid(p) = 400;
-    points.mass_liquid(p) = 100;
-    points.density_liquid(p) = 1000;
-    points.porosity(p) = 0.4;
-    points.saturation(p) = 1;
-    points.conductivity(p) = 1e-4;
-  }
-  PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
-  ActiveNodes active(mesh.numNodes());
-  active.rebuild(mesh, points, &shapes, Kokkos::View<const int*, MemSpace>());
-  GridFields grid;
-  grid.allocate(mesh.numNodes());
-  NodeRecords records;
-  Kokkos::View<int*, MemSpace> liquid("liquid_m", 1);
-  liquid(0) = 1;
-  mapPointsToGrid(points, shapes, liquid, 0.0, TransferSettings{}, active, records, grid);
-  computeNodalVelocities(active, grid);
-  const auto X = hostCopy(mesh.coordinates);
-  for (int i = 0; i < mesh.numNodes(); ++i) {
-    grid.velocity_liquid_i(i, 0) = 0;
-    grid.velocity_liquid_i(i, 1) = 1e-3 * X(i, 1) * X(i, 1);
-  }
-  Kokkos::View<unsigned char*, MemSpace> conditioned("conditioned_i", mesh.numNodes());
-  PointRates rates;
-  interpolateVelocityGradients(points, shapes, liquid, active, grid, records, 1e-3, rates,
-                               conditioned);
-  return rates;
+  return test::wetPointsFlux(
+      5, family, 2, 2, {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}}, [](Real, Real y) {
+        return std::array<Real, 2>{0, 1e-3 * y * y};
+      });
 }
 
 TEST(GridCellFlux, ThePointsOfOneCellShareTheFluxDivergenceOfItsCentre) {

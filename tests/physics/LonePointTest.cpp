@@ -6,9 +6,7 @@
 #include <cmath>
 
 #include "Harness.hpp"
-#include "argine/transfer/ActiveNodes.hpp"
-#include "argine/transfer/GridFields.hpp"
-#include "argine/transfer/NodeRecords.hpp"
+#include "WetPointsFlux.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
@@ -16,51 +14,19 @@
 namespace argine {
 namespace {
 
-using test::hostCopy;
-
-/// `count` points of a wet material at the given local positions of element `element` of a
-/// 3 x 3 quad mesh, 1 m cells; a grid with the solid at rest and the liquid flowing (a linear
-/// field, so every point has a flux); their flux increments over dt = 1e-3 s.
+/// Points in the middle cell [1, 2]^2 of a 3 x 3 grid (linear quad4 shapes), the liquid
+/// flowing in a linear field (so every point has a flux), optionally a hydraulic condition on
+/// one of the cell's nodes: their flux increments over dt = 1e-3 s.
 PointRates fluxOf(const std::vector<std::array<Real, 2>>& local, bool condition_on_a_node) {
-  Mesh mesh = test::rectangleMesh(3, 3, 3.0, 3.0, ElementType::Quad4);
-  MaterialPoints points;
-  points.allocate(static_cast<int>(local.size()));
-  for (int p = 0; p < points.count; ++p) {
-    points.element(p) = 4;  // the middle cell [1, 2]^2
-    points.local(p, 0) = local[p][0];
-    points.local(p, 1) = local[p][1];
-    points.position(p, 0) = 1.5 + 0.5 * local[p][0];
-    points.position(p, 1) = 1.5 + 0.5 * local[p][1];
-    points.volume(p) = 0.25;
-    points.mass_solid(p) = 400;
-    points.mass_liquid(p) = 100;
-    points.density_liquid(p) = 1000;
-    points.porosity(p) = 0.4;
-    points.saturation(p) = 1;
-    points.conductivity(p) = 1e-4;
-  }
-  PointShapes shapes;
-  evaluatePointShapes(mesh, points, shapes);
-  ActiveNodes active(mesh.numNodes());
-  active.rebuild(mesh, points);
-  GridFields grid;
-  grid.allocate(mesh.numNodes());
-  NodeRecords records;
-  Kokkos::View<int*, MemSpace> liquid("liquid_m", 1);
-  liquid(0) = 1;
-  mapPointsToGrid(points, shapes, liquid, 0.0, TransferSettings{}, active, records, grid);
-  computeNodalVelocities(active, grid);
-  const auto X = hostCopy(mesh.coordinates);
-  for (int i = 0; i < mesh.numNodes(); ++i) {
-    grid.velocity_liquid_i(i, 0) = 1e-3 * X(i, 0);  // div v_L = 2e-3 1/s, v_S = 0
-    grid.velocity_liquid_i(i, 1) = 1e-3 * X(i, 1);
-  }
-  Kokkos::View<unsigned char*, MemSpace> conditioned("conditioned_i", mesh.numNodes());
-  if (condition_on_a_node) conditioned(mesh.connectivity(4, 2)) = 1;
-  PointRates rates;
-  interpolateVelocityGradients(points, shapes, liquid, active, grid, records, 1e-3, rates,
-                               conditioned);
-  return rates;
+  std::vector<std::array<Real, 2>> inside;
+  for (const auto& xi : local) inside.push_back({(xi[0] + 1) / 2, (xi[1] + 1) / 2});
+  const int upper_right_of_the_cell = 2 + 4 * 2;  // node (2, 2) of 4 x 4
+  return test::wetPointsFlux(
+      3, ShapeFamily::Linear, 1, 1, inside,
+      [](Real x, Real y) {
+        return std::array<Real, 2>{1e-3 * x, 1e-3 * y};
+      },
+      condition_on_a_node ? std::vector<int>{upper_right_of_the_cell} : std::vector<int>{});
 }
 
 TEST(LonePoint, APointAloneHasNoRelativeFlux) {
