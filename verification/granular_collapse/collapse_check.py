@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The V7 bounds, checked on rows written by collapse_run.py (CTest label verification).
 
-  collapse_check.py bounds  ROWS.csv ...   run-out (front, 0.025 L0) and H_inf/L0 within the
+  collapse_check.py bounds  ROWS.csv ...   run-out (front, 0.03 L0) and H_inf/L0 within the
                                            bands of collapse_reference (reference/SOURCES.md)
   collapse_check.py volume  ROWS.csv ...   sum of the point volumes at the end within 5 % of
                                            the initial one (psi = 0: no dilation)
@@ -41,7 +41,7 @@ def bounds(row):
     lube_low, lube_high = (float(v) for v in ref.lube_runout(a))
     lube = f"{lube_low:.2f}" if lube_low == lube_high else f"{lube_low:.2f}-{lube_high:.2f}"
     print(f"a = {a:g} ({row['shape']} {row['transfer']}, L0/{row['cells']}): run-out "
-          f"(L_inf - L0)/L0 = {runout:.3f} (front at 0.025 L0; L99 {float(row['runout_L99']):.3f})"
+          f"(L_inf - L0)/L0 = {runout:.3f} (front at 0.03 L0; L99 {float(row['runout_L99']):.3f})"
           f" in [{r_low:.2f}, {r_high:.2f}] (Lube {lube}): {'ok' if ok_r else 'FAIL'}; "
           f"H_inf/L0 = {height:.3f} in [{h_low:.2f}, {h_high:.2f}] (Lube "
           f"{float(ref.lube_height(a)):.2f}): {'ok' if ok_h else 'FAIL'}")

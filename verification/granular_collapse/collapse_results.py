@@ -9,16 +9,20 @@ Definitions (doc/verification.md, "V7 Granular column collapse"):
   mass       m_p = rho_S (1 - n_p) V_p of the first output (constant for a dry point)
   L_q        x behind which the fraction q of the solid mass stays (q = 0.95, 0.99, 1)
   h(x)       deposit thickness at the initial packing: the points' initial volumes
-             V_p0 = m_p / (rho_S (1 - n_0)) binned by their final x in columns of width
-             L0 / 20 (the same on every mesh), divided by the width: area per length, so
+             V_p0 = m_p / (rho_S (1 - n_0)), each spread over one point spacing around its
+             final x, summed in columns of width L0 / 20 (the same on every mesh) and
+             divided by the width: area per length, so
              voids between points do not count as soil, and an error of the volume update
              (which the volume check reports) does not change where the mass is
-  front      the first x from the wall where h(x), linear between bin centres, falls below a
+  front      the first x from the wall where h(x), smoothed by a running mean over three
+             columns (0.15 L0) and linear between their centres, falls below a
              threshold (at least the threshold is deposit): one point spacing s = h / points
              per direction (`front`, the threshold shrinks with the mesh), and the fixed
-             0.025 L0 (`front_fixed`, the point spacing of the default mesh L0/20), which is
-             the run-out compared with the experiments
-  H_inf      the deposit height at the wall: the mean of h(x) over 0 <= x <= L0 / 10
+             0.03 L0 (`front_fixed`, the run-out compared with the experiments; between
+             one and two layers of points on the default mesh L0/20, whose one-layer sheet
+             is 0.025 L0 thick, so a lone sheet of points does not count as deposit)
+  H_inf      the deposit height at the wall: the mean of h(x) over 0 <= x <= L0 / 5 (Lube's
+             self-similar deposit averages 1-3 % below its wall height there, a = 2-6)
   volume     sum V_p at the end / at the start; porosity range over the points and outputs
   stop       first output after the peak from which the point kinetic energy stays below
              1e-4 of the column's initial potential energy m g H0 / 2 (the outputs are
@@ -36,6 +40,8 @@ import numpy as np
 REST_FRACTION = 1e-4
 # Width of the columns of the thickness profile: L0 / BINS_PER_L0 on every mesh.
 BINS_PER_L0 = 20
+# Thickness, as a fraction of L0, at which the deposit ends (front_fixed).
+FRONT_THRESHOLD = 0.03
 
 
 def _names(variable):
@@ -69,12 +75,27 @@ def mass_quantile(x, mass, q):
     return float(x[order][min(k, len(x) - 1)])
 
 
-def thickness_profile(x, volume, width, extent):
-    """Bin centres and thickness (binned volume / width) from x = 0 to extent."""
+def thickness_profile(x, volume, width, extent, spread):
+    """Bin centres and thickness (area in the bin / width) from x = 0 to extent. Each point's
+    area is spread evenly over [x - spread/2, x + spread/2] (spread: the point spacing,
+    at most the width), so that a row of points at that spacing gives the same thickness
+    in every bin whatever its offset from the bin edges (no aliasing)."""
     bins = int(np.ceil(extent / width))
-    index = np.clip((x / width).astype(int), 0, bins - 1)
-    area = np.bincount(index, weights=volume, minlength=bins)
-    return (np.arange(bins) + 0.5) * width, area / width
+    left = np.clip(x - spread / 2, 0, bins * width - spread)
+    k = np.clip((left / width).astype(int), 0, bins - 1)
+    inside = np.clip(((k + 1) * width - left) / spread, 0, 1)  # share in bin k, rest in k + 1
+    area = np.bincount(k, weights=volume * inside, minlength=bins + 1)
+    area += np.bincount(k + 1, weights=volume * (1 - inside), minlength=bins + 1)
+    return (np.arange(bins) + 0.5) * width, area[:bins] / width
+
+
+def smoothed(thickness):
+    """Running mean over three bins (two at the ends): the profile the fronts are read from,
+    which a bin emptied by the bunching of points into lines does not cut short."""
+    padded = np.r_[0.0, thickness, 0.0]
+    count = np.r_[0.0, np.ones(len(thickness)), 0.0]
+    kernel = np.ones(3)
+    return np.convolve(padded, kernel, "valid") / np.convolve(count, kernel, "valid")
 
 
 def front_position(centres, thickness, threshold):
@@ -121,7 +142,8 @@ def measure(directory, name, column):
     spacing = h / column["per_direction"]
     extent = max(float(np.max(x)), L0) + 2 * h
     width = L0 / BINS_PER_L0
-    centres, thickness = thickness_profile(x, volume[0], width, extent + width)
+    centres, thickness = thickness_profile(x, volume[0], width, extent + width, spacing)
+    smooth = smoothed(thickness)
     energy_scale = float(np.sum(mass)) * column["g"] * H0 / 2
     diagnostics = read_diagnostics(os.path.join(directory, name + "_diagnostics.csv"))
     ke_points = float(0.5 * np.sum(mass * v2))
@@ -130,9 +152,9 @@ def measure(directory, name, column):
     result = {
         "L95": mass_quantile(x, mass, 0.95), "L99": mass_quantile(x, mass, 0.99),
         "L100": float(np.max(x)),
-        "front": front_position(centres, thickness, spacing),
-        "front_fixed": front_position(centres, thickness, 0.025 * L0),
-        "H_inf": float(np.mean(thickness[: BINS_PER_L0 // 10])),
+        "front": front_position(centres, smooth, spacing),
+        "front_fixed": front_position(centres, smooth, FRONT_THRESHOLD * L0),
+        "H_inf": float(np.mean(thickness[: BINS_PER_L0 // 5])),
         "volume_ratio": float(np.sum(volume[last]) / np.sum(volume[0])),
         "porosity_min": float(np.min(porosity)), "porosity_max": float(np.max(porosity)),
         "t_end": float(time[last]), "t_stop": stop_time(diagnostics, energy_scale),

@@ -31,13 +31,19 @@ check("L99 with 99 % of the mass at x = 1", mass_quantile(x, np.r_[891.0, np.one
 # A wedge h = 1 - x of points on a 0.01 grid: binned thickness and its front.
 gx, gy = np.meshgrid(np.arange(0.005, 1.0, 0.01), np.arange(0.005, 1.0, 0.01))
 inside = gy < 1 - gx
-centres, thickness = thickness_profile(gx[inside], np.full(inside.sum(), 1e-4), 0.05, 1.2)
+centres, thickness = thickness_profile(gx[inside], np.full(inside.sum(), 1e-4), 0.05, 1.2, 0.01)
 check("wedge thickness at x = 0.275", float(np.interp(0.275, centres, thickness)), 0.725, 0.01)
 check("wedge front at h = 0.1", front_position(centres, thickness, 0.1), 0.9, 0.02)
 # A detached point ahead of the deposit does not move the front.
 centres, thickness = thickness_profile(np.r_[gx[inside], 1.15], np.full(inside.sum() + 1, 1e-4),
-                                       0.05, 1.2)
+                                       0.05, 1.2, 0.01)
 check("front with a detached point", front_position(centres, thickness, 0.1), 0.9, 0.02)
+# A row of points at spacing 0.01, shifted by any offset, is 0.02 thick in every bin of 0.05.
+for offset in (0.0, 0.0025, 0.005):
+    centres, thickness = thickness_profile(np.arange(0.005, 1.0, 0.01) + offset,
+                                           np.full(100, 2e-4), 0.05, 1.2, 0.01)
+    check(f"row of points offset {offset}: thickness range", float(np.ptp(thickness[1:19])), 0,
+          1e-12)
 
 # The laws reproduce reference_values_at_target_a.csv (to its printed digits).
 for a, row in ref.tabulated_bands().items():
