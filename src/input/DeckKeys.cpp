@@ -617,7 +617,9 @@ ListSchema stageKeys() {
                             "blended with PIC; APIC: affine particle-in-cell (Jiang et al. "
                             "2015), v_p and an affine velocity matrix C_p from the grid for both "
                             "phases, conserving angular momentum and leaving no point velocity "
-                            "the grid cannot see (doc/theory.md Sec. 4)")
+                            "the grid cannot see; TPIC: v_p from the grid, C_p the velocity "
+                            "gradient of the remapped field, robust where points barely reach a "
+                            "node (doc/theory.md Sec. 3.11)")
                 .byDefault(std::string("FLIP"))
                 .when("Solver", {"explicit", "quasi-static", "fixed skeleton"}));
   stage.add(KeySpec::real("Solid PIC Fraction", "-",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "argine/mesh/ElementFootprint.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/points/MaterialPoints.hpp"
 
@@ -76,14 +77,20 @@ RankDecomposition::RankDecomposition(MPI_Comm comm, const Mesh& mesh,
   owned_elements_ =
       static_cast<int>(std::count(element_owner_.begin(), element_owner_.end(), rank_));
 
-  // The ranks of each node's elements, as a sorted small list.
+  // The ranks whose elements' points can reach each node (the elements whose footprint
+  // holds it: their nodes on linear shapes, the 4 x 4 block on the grid families), as a
+  // sorted small list.
+  const ElementFootprint footprint(mesh);
   std::vector<std::vector<int>> node_ranks(nodes);
-  for (int e = 0; e < elements; ++e)
-    for (int a = 0; a < per; ++a) {
-      auto& ranks = node_ranks[C(e, a)];
+  int reach[ElementFootprint::kMaxNodes];
+  for (int e = 0; e < elements; ++e) {
+    const int count = footprint.nodes(e, reach);
+    for (int a = 0; a < count; ++a) {
+      auto& ranks = node_ranks[reach[a]];
       const int r = element_owner_[e];
       if (std::find(ranks.begin(), ranks.end(), r) == ranks.end()) ranks.push_back(r);
     }
+  }
   std::vector<int> slot_of(nodes, -1);
   node_owned_i_ = Kokkos::View<unsigned char*, MemSpace>("node_owned_i", nodes);
   const auto owned = Kokkos::create_mirror_view(node_owned_i_);

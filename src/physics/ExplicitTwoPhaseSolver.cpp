@@ -313,6 +313,7 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     hydraulic_plan_current_ = true;
     planned_gravity_ = gravity_;
     const FluxCorrectionList& corrections = hydraulic_.corrections();
+    markConditionedNodes(corrections.node, hydraulic_.loads().node);
     if (static_cast<int>(correction_locks_.extent(0)) != corrections.count())
       correction_locks_ =
           Kokkos::View<unsigned*, MemSpace>("correction_locks", corrections.count());
@@ -338,6 +339,18 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   if (reproducible_sums_)
     foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
   argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
+}
+
+void ExplicitTwoPhaseSolver::markConditionedNodes(Kokkos::View<const int*, MemSpace> corrected,
+                                                  Kokkos::View<const int*, MemSpace> loaded) {
+  if (static_cast<int>(conditioned_i_.extent(0)) != mesh_.numNodes())
+    conditioned_i_ = Kokkos::View<unsigned char*, MemSpace>("conditioned_i", mesh_.numNodes());
+  Kokkos::deep_copy(conditioned_i_, 0);
+  const auto flags = conditioned_i_;
+  for (const auto& nodes : {corrected, loaded})
+    Kokkos::parallel_for(
+        "mark_conditioned_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+        KOKKOS_LAMBDA(const int j) { flags(nodes(j)) = 1; });
 }
 
 void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {
@@ -393,7 +406,7 @@ void ExplicitTwoPhaseSolver::applyVelocityBoundaryConditions() {
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // APIC interpolates the grid's updated velocities, with the same conditions as the nodal
   // velocities of step 4 (a fixed node's v~ is zero, as its point neighbours then see it).
-  if (transfer_.scheme == TransferScheme::Apic) {
+  if (transfer_.scheme != TransferScheme::Flip) {  // APIC, TPIC
     advanceNodalVelocities(nodes_in_use_, dt, grid_);
     constrainNodalVelocities();
   }
@@ -435,8 +448,10 @@ void ExplicitTwoPhaseSolver::constrainNodalVelocities() {
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
-  interpolateVelocityGradients(points_, shapes_, table_.liquidCarrying(), nodes_in_use_, grid_,
-                               node_records_, dt, rates_);
+  interpolateVelocityGradients(
+      points_, shapes_, table_.liquidCarrying(), nodes_in_use_, grid_, node_records_, dt, rates_,
+      hydraulic_.empty() ? Kokkos::View<const unsigned char*, MemSpace>() : conditioned_i_,
+      transfer_.scheme);
   // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
   averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
   // ---- Against the Tri3 pressure checkerboard: a conservative head exchange (no-op unless a

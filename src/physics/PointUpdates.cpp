@@ -4,13 +4,12 @@ namespace argine {
 
 namespace {
 
-/// One pass: the five point updates, then the point's share of the sums [M_L, points with an
-/// invalid state] (an array reduction). One call takes kLanes consecutive points: where they
-/// are located points of one material with a lane stress update (the common case once the
-/// points are sorted by element), the porosity, stress and position updates run on all
-/// of them at once (core/Lanes.hpp), the liquid updates point by point; otherwise every
-/// point takes the one-point updates. The same bits either way, and the sums add the points
-/// in their order.
+/// One pass: the gap closure and the five point updates, then the point's share of the sums [M_L,
+/// points with an invalid state] (an array reduction). One call takes kLanes consecutive points:
+/// where they are located points of one material with a lane stress update (the common case once
+/// the points are sorted by element), the porosity, stress and position updates run on all of them
+/// at once (core/Lanes.hpp), the liquid updates point by point; otherwise every point takes the
+/// one-point updates. The same bits either way, and the sums add the points in their order.
 struct PointStateUpdate {
   using value_type = Real[];
   using size_type = int;
@@ -30,6 +29,7 @@ struct PointStateUpdate {
     const int first = chunk * kLanes, end = first + kLanes < count ? first + kLanes : count;
     if (lanesShareAMaterial(first)) {
       const PointMaterial& material = v.materials_m(v.points.material(first));
+      for (int p = first; p < end; ++p) closeSeparation(v, p);
       updatePorosityAndVolume<Lanes>(v, first);
       updateLiquidPressureLanes(v, first, material);
       updateEffectiveStressLanes(v, first, material);
@@ -38,6 +38,7 @@ struct PointStateUpdate {
     } else {
       for (int p = first; p < end; ++p) {
         if (v.points.element(p) < 0) continue;
+        closeSeparation(v, p);
         updatePorosityAndVolume(v, p);
         updateLiquidPressure(v, p);
         updateEffectiveStress(v, p);

@@ -20,6 +20,7 @@ void MaterialPoints::allocate(int n) {
   mass_solid = View<Real*>("mass_solid_p", n);
   mass_liquid = View<Real*>("mass_liquid_p", n);
   porosity = View<Real*>("porosity_p", n);
+  separation = View<Real*>("separation_p", n);
   pressure_liquid = View<Real*>("pressure_liquid_p", n);
   density_liquid = View<Real*>("density_liquid_p", n);
   saturation = View<Real*>("saturation_p", n);

@@ -99,14 +99,19 @@ void readVelocityUpdateValues(const ActiveNodes& active, const GridFields& grid,
       });
 }
 
-void readStrainValues(const ActiveNodes& active, const GridFields& grid, NodeRecords& records) {
+void readStrainValues(const ActiveNodes& active, const GridFields& grid,
+                      Kokkos::View<const unsigned char*, MemSpace> conditioned_i,
+                      NodeRecords& records) {
   const auto values = records.values_i;
   const GridFields g = grid;
+  const bool any_condition = conditioned_i.extent(0) > 0;
   forEachActiveNode(
       "read_strain_values", active, KOKKOS_LAMBDA(const int i) {
         readVector(values, i, kReadStrainVelocitySolid, g.velocity_solid_i);
         readVector(values, i, kReadStrainVelocityLiquid, g.velocity_liquid_i);
         values(i, kReadStrainLiquidContent) = g.liquid_content_i(i);
+        values(i, kReadStrainLiquidVolume) = g.volume_liquid_i(i);
+        values(i, kReadStrainConditioned) = any_condition && conditioned_i(i) ? 1 : 0;
       });
 }
 

@@ -20,17 +20,32 @@ namespace {
 
 namespace KE = Kokkos::Experimental;
 
-/// Calls f(family, affine) with the shape family of `shapes` (withShapeFamily) and
-/// std::bool_constant<transfer.scheme == APIC>: both chosen once per call.
+/// A transfer scheme as a type: Scheme<TransferScheme::Apic>{}.
+template <TransferScheme kScheme>
+using Scheme = std::integral_constant<TransferScheme, kScheme>;
+
+/// Calls f(family, scheme) with the shape family of `shapes` (withShapeFamily) and the
+/// scheme of `transfer` as a Scheme<>: both chosen once per call.
 template <class Function>
 void withFamilyAndScheme(const PointShapes& shapes, const TransferSettings& transfer,
                          Function&& f) {
   withShapeFamily(shapes, [&](auto family) {
-    if (transfer.scheme == TransferScheme::Apic)
-      f(family, std::true_type{});
-    else
-      f(family, std::false_type{});
+    switch (transfer.scheme) {
+      case TransferScheme::Apic:
+        return f(family, Scheme<TransferScheme::Apic>{});
+      case TransferScheme::Tpic:
+        return f(family, Scheme<TransferScheme::Tpic>{});
+      case TransferScheme::Flip:
+        break;
+    }
+    f(family, Scheme<TransferScheme::Flip>{});
   });
+}
+
+/// Whether the momenta a point gives its nodes carry its affine part C_p (x_i - x_p) in the
+/// P2G of step 1.
+constexpr bool affineMomenta(TransferScheme scheme) {
+  return scheme != TransferScheme::Flip;
 }
 
 /// Whether Family is the grid families' (one point at a time, GridShapesAt).
@@ -299,7 +314,7 @@ KOKKOS_INLINE_FUNCTION bool lanesMapTogether(const Kokkos::View<int*, MemSpace>&
   return true;
 }
 
-template <class Family, bool kAffine>
+template <class Family, TransferScheme kScheme>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity,
                          const TransferSettings& transfer, const ActiveNodes& active,
@@ -324,6 +339,7 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   const auto local_p = points.local;
   const int count = points.count;
   constexpr int kNodes = Family::kNodes;
+  constexpr bool kAffine = affineMomenta(kScheme);
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
   // grid families: point by point.
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
@@ -362,6 +378,17 @@ struct G2PPointViews {
   Kokkos::View<const Real* [kDim], MemSpace> coordinates_i;
 };
 
+/// TPIC's G2P of one phase: v_p = sum N v~_i from the grid velocities in `slot` (x, y).
+template <int kNodes, class At, class Values, class T>
+KOKKOS_INLINE_FUNCTION void interpolateGridVelocity(const At& at, const Values& values_i, int slot,
+                                                    T v[kDim]) {
+  for (int d = 0; d < kDim; ++d) v[d] = splat<T>(0);
+  for (int a = 0; a < kNodes; ++a) {
+    const T N = at.value(a);
+    for (int d = 0; d < kDim; ++d) v[d] += N * at.nodal(values_i, a, slot + d);
+  }
+}
+
 /// APIC's G2P of one phase: v_p = sum N v~_i and C_p = sum v~_i (grad N_i)^T (C_jk =
 /// sum v~_i,j dN_i/dx_k) from the grid velocities in `slot` (x, y) of `values_i`.
 template <int kNodes, class At, class Values, class T>
@@ -383,15 +410,18 @@ KOKKOS_INLINE_FUNCTION void affineVelocityFromGrid(const At& at, const Values& v
 /// The velocity update of point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located
 /// and all `wet` or all dry, from the nodal values of readVelocityUpdateValues, and their
 /// momenta added to the nodes (the remap; slots 4-7, one block). The kinetic energies and
-/// the count of non-finite velocities are summed in point order. FLIP (kAffine false) or
-/// APIC (TransferScheme).
-template <int kNodes, bool kAffine, class At, class Values, class Sums>
+/// the count of non-finite velocities are summed in point order, per TransferScheme: FLIP
+/// (v += dt sum N a), APIC (v and C from the grid's v~, momenta with C), TPIC (v from the
+/// grid's v~, momenta without C: C is step 4's velocity gradient, strainIncrementsAt).
+template <int kNodes, TransferScheme kScheme, class At, class Values, class Sums>
 KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real dt, Real pic_solid,
                                                   Real pic_liquid, const Values& values_i,
                                                   const G2PPointViews& v, const Sums& sums, int p,
                                                   Real& ks, Real& kl, int& bad) {
   using T = typename At::Value;
   constexpr int kPoints = At::kCount;
+  constexpr bool kAffine = kScheme == TransferScheme::Apic;    // the remap carries C_p
+  constexpr bool kFromGrid = kScheme != TransferScheme::Flip;  // v_p = sum N v~_i
   T v_solid[kDim], cs[kAffineComponents] = {}, xp[kDim] = {}, offset[kNodes][kDim] = {};
   T as[kDim] = {}, vs_grid[kDim] = {};  // FLIP
   if constexpr (kAffine) {
@@ -400,6 +430,8 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
     xp[0] = load<T>(v.position_p, p, 0);
     xp[1] = load<T>(v.position_p, p, 1);
     for (int a = 0; a < kNodes; ++a) nodeOffset(at, v.coordinates_i, a, xp, offset[a]);
+  } else if constexpr (kFromGrid) {
+    interpolateGridVelocity<kNodes>(at, values_i, kReadVelocitySolid, v_solid);
   } else {
     // solid: FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (the header). Each
     // interpolation a loop of its own: the conditions are tested once per point, not per node.
@@ -439,6 +471,8 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
     if constexpr (kAffine) {
       affineVelocityFromGrid<kNodes>(at, values_i, kReadVelocityLiquid, v_liquid, cl);
       storeComponents(v.affine_liquid_p, p, cl);
+    } else if constexpr (kFromGrid) {
+      interpolateGridVelocity<kNodes>(at, values_i, kReadVelocityLiquid, v_liquid);
     } else {
       // liquid: the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i
       // (the header); with pic_liquid = 0 this is FLIP.
@@ -483,7 +517,7 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
   sums.template addRows<kNodes>(at, row, 1, 2, wet);
 }
 
-template <class Family, bool kAffine>
+template <class Family, TransferScheme kScheme>
 KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
                                                 const LiquidCarrying& liquid_m,
                                                 const ActiveNodes& active, Real dt,
@@ -515,21 +549,21 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
     if constexpr (kOnGrid<Family>) {
       for (int p = first; p < first + kLanes && p < count; ++p)
         if (element_p(p) >= 0)
-          updatePointVelocityAt<kNodes, kAffine>(GridShapesAt(shapes, p),
+          updatePointVelocityAt<kNodes, kScheme>(GridShapesAt(shapes, p),
                                                  liquid_m(material_p(p)) != 0, dt, pic_solid,
                                                  pic_liquid, values_i, v, sums, p, ks, kl, bad);
     } else {
       bool wet = false, one_element = false;
       if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
         withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-          updatePointVelocityAt<kNodes, kAffine>(at, wet, dt, pic_solid, pic_liquid, values_i, v,
+          updatePointVelocityAt<kNodes, kScheme>(at, wet, dt, pic_solid, pic_liquid, values_i, v,
                                                  sums, first, ks, kl, bad);
         });
         return;
       }
       for (int p = first; p < first + kLanes && p < count; ++p) {
         if (element_p(p) < 0) continue;
-        updatePointVelocityAt<kNodes, kAffine>(PointShapesAt<Real>(shapes, element_p, local_p, p),
+        updatePointVelocityAt<kNodes, kScheme>(PointShapesAt<Real>(shapes, element_p, local_p, p),
                                                liquid_m(material_p(p)) != 0, dt, pic_solid,
                                                pic_liquid, values_i, v, sums, p, ks, kl, bad);
       }
@@ -542,13 +576,20 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
 /// The strain, spin, displacement and liquid-divergence increments of point p (T = Real) or
 /// of points p .. p + kLanes - 1 (Lanes), all located and all `wet` or all dry, from the
 /// nodal values of readStrainValues (interpolateVelocityGradients).
-template <int kNodes, bool kCentre, class At, class Values>
+/// The point fields the strain kernel reads or writes besides the rates: the volume (is the
+/// point alone for the liquid), and TPIC's affine matrices (the velocity gradients).
+struct StrainPointViews {
+  Kokkos::View<Real*, MemSpace> volume_p;
+  Kokkos::View<Real*[kAffineComponents], MemSpace> affine_solid_p, affine_liquid_p;
+};
+
+template <int kNodes, bool kCentre, bool kStoreGradients, class At, class Values>
 KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
-                                               const Values& values_i, const PointRates& rates,
-                                               int p) {
+                                               const Values& values_i, const StrainPointViews& v,
+                                               const PointRates& rates, int p) {
   using T = typename At::Value;
   T L[kDim][kDim] = {};  // L_jk = d v_S,j / d x_k
-  T v[kDim] = {};
+  T velocity[kDim] = {};
   for (int a = 0; a < kNodes; ++a) {
     const T N = at.value(a);
     const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
@@ -558,19 +599,25 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
     L[0][1] += vx * dy;
     L[1][0] += vy * dx;
     L[1][1] += vy * dy;
-    v[0] += N * vx;
-    v[1] += N * vy;
+    velocity[0] += N * vx;
+    velocity[1] += N * vy;
   }
   const T strain[kStressComponents] = {dt * L[0][0], dt * L[1][1],
                                        splat<T>(0),                      // plane strain
                                        0.5 * dt * (L[0][1] + L[1][0])};  // tensor shear
   storeComponents(rates.strain_increment_p, p, strain);
   store(rates.spin_increment_p, p, spinIncrement(dt, L[0][1], L[1][0]));  // Jaumann rotation
-  const T displacement[kDim] = {dt * v[0], dt * v[1]};
+  const T displacement[kDim] = {dt * velocity[0], dt * velocity[1]};
   storeComponents(rates.displacement_increment_p, p, displacement);
+  if constexpr (kStoreGradients) {  // TPIC: C_p = grad v_S of the remapped field
+    const T C[kAffineComponents] = {L[0][0], L[0][1], L[1][0], L[1][1]};
+    storeComponents(v.affine_solid_p, p, C);
+  }
 
   T divergence = {}, relative_divergence = {}, content = {};
   T w[kDim] = {}, gradient[kDim] = {};
+  T liquid_gradient[kAffineComponents] = {};                              // TPIC: grad v_L
+  auto alone = both(divergence == divergence, divergence == divergence);  // true in every lane
   if (wet) {
     // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
     // at the element centre (N = 1/kNodes), not at the point: per-point values differ
@@ -586,8 +633,21 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
       const T wx = vlx - at.nodal(values_i, a, kReadStrainVelocitySolid),
               wy = vly - at.nodal(values_i, a, kReadStrainVelocitySolid + 1);
       const T c = at.nodal(values_i, a, kReadStrainLiquidContent);
+      // the point shares node a when the node's liquid volume exceeds its own N V (the same
+      // product as the P2G's: a node of its alone holds exactly it)
+      const T own = at.value(a) * load<T>(v.volume_p, p);
+      const T shared_volume = at.nodal(values_i, a, kReadStrainLiquidVolume);
+      const T conditioned = at.nodal(values_i, a, kReadStrainConditioned);
+      const auto untouched = at.value(a) == 0;  // a stencil slot of no weight
+      alone = both(alone, either(untouched, both(shared_volume <= own, conditioned == 0)));
       divergence += vlx * dx + vly * dy;
       relative_divergence += wx * dx + wy * dy;
+      if constexpr (kStoreGradients) {
+        liquid_gradient[0] += vlx * dx;
+        liquid_gradient[1] += vlx * dy;
+        liquid_gradient[2] += vly * dx;
+        liquid_gradient[3] += vly * dy;
+      }
       w[0] += weight * wx;
       w[1] += weight * wy;
       content += weight * c;
@@ -595,9 +655,19 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
       gradient[1] += c * dy;
     }
   }
-  store(rates.liquid_divergence_increment_p, p, dt * divergence);
-  store(rates.content_flux_divergence_increment_p, p,
-        dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]));
+  if constexpr (kStoreGradients)
+    if (wet) storeComponents(v.affine_liquid_p, p, liquid_gradient);
+  // A point alone exchanges no liquid (interpolateVelocityGradients): div v_L = div v_S and
+  // no content flux, so its liquid mass stays.
+  const T flux = dt * (content * relative_divergence + gradient[0] * w[0] + gradient[1] * w[1]);
+  if (!(wet && anyLane(alone))) {
+    store(rates.liquid_divergence_increment_p, p, dt * divergence);
+    store(rates.content_flux_divergence_increment_p, p, flux);
+    return;
+  }
+  store(rates.liquid_divergence_increment_p, p,
+        select(alone, dt * (L[0][0] + L[1][1]), dt * divergence));
+  store(rates.content_flux_divergence_increment_p, p, select(alone, splat<T>(0), flux));
 }
 
 /// The increments of a point outside the mesh: none.
@@ -611,16 +681,19 @@ KOKKOS_INLINE_FUNCTION void clearStrainIncrements(const PointRates& rates, int p
 
 /// One call per kLanes consecutive points: all of them at once where they are located and
 /// all wet or all dry (strainIncrementsAt<Lanes>), else one by one. The same bits.
-template <class Family>
+template <class Family, bool kStoreGradients>
 void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointShapes& shapes,
                                       const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                       const GridFields& grid, NodeRecords& records, Real dt,
-                                      PointRates& rates) {
+                                      PointRates& rates,
+                                      Kokkos::View<const unsigned char*, MemSpace> conditioned_i) {
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
+  const StrainPointViews strain_v{points.volume, points.affine_velocity_solid,
+                                  points.affine_velocity_liquid};
   records.allocate(grid.numNodes());
-  readStrainValues(active, grid, records);
+  readStrainValues(active, grid, conditioned_i, records);
   const auto values_i = records.values_i;
   const PointRates r = rates;
   const int count = points.count;
@@ -636,25 +709,27 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
             if (element_p(p) < 0)
               clearStrainIncrements(r, p);
             else
-              strainIncrementsAt<kNodes, kCentre>(GridShapesAt(shapes, p),
-                                                  liquid_m(material_p(p)) != 0, dt, values_i, r, p);
+              strainIncrementsAt<kNodes, kCentre, kStoreGradients>(GridShapesAt(shapes, p),
+                                                                   liquid_m(material_p(p)) != 0, dt,
+                                                                   values_i, strain_v, r, p);
           }
         } else {
           bool wet = false, one_element = false;
           if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
-            withLaneShapes<kNodes>(
-                shapes, element_p, local_p, first, one_element, [&](const auto& at) {
-                  strainIncrementsAt<kNodes, kCentre>(at, wet, dt, values_i, r, first);
-                });
+            withLaneShapes<kNodes>(shapes, element_p, local_p, first, one_element,
+                                   [&](const auto& at) {
+                                     strainIncrementsAt<kNodes, kCentre, kStoreGradients>(
+                                         at, wet, dt, values_i, strain_v, r, first);
+                                   });
             return;
           }
           for (int p = first; p < end; ++p) {
             if (element_p(p) < 0)
               clearStrainIncrements(r, p);
             else
-              strainIncrementsAt<kNodes, kCentre>(
+              strainIncrementsAt<kNodes, kCentre, kStoreGradients>(
                   PointShapesAt<Real>(shapes, element_p, local_p, p), liquid_m(material_p(p)) != 0,
-                  dt, values_i, r, p);
+                  dt, values_i, strain_v, r, p);
           }
         }
       });
@@ -666,8 +741,8 @@ void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
                      const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
                      const ActiveNodes& active, NodeRecords& records, GridFields& grid,
                      const GridFields* compensation) {
-  withFamilyAndScheme(shapes, transfer, [&](auto family, auto affine) {
-    mapPointsToGridImpl<decltype(family), decltype(affine)::value>(
+  withFamilyAndScheme(shapes, transfer, [&](auto family, auto scheme) {
+    mapPointsToGridImpl<decltype(family), decltype(scheme)::value>(
         points, shapes, liquid_m, gravity, transfer, active, records, grid, compensation);
   });
 }
@@ -725,8 +800,8 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
         for (int d = 0; d < kDim; ++d) momentum_solid_i(i, d) = momentum_liquid_i(i, d) = 0;
       });
   KineticTotals totals;
-  withFamilyAndScheme(shapes, transfer, [&](auto family, auto affine) {
-    totals = updateVelocitiesAndMapMomentaImpl<decltype(family), decltype(affine)::value>(
+  withFamilyAndScheme(shapes, transfer, [&](auto family, auto scheme) {
+    totals = updateVelocitiesAndMapMomentaImpl<decltype(family), decltype(scheme)::value>(
         shapes, liquid_m, active, dt, transfer, points, records, grid, compensation);
   });
   return totals;
@@ -735,11 +810,17 @@ KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
 void interpolateVelocityGradients(const MaterialPoints& points, const PointShapes& shapes,
                                   const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                   const GridFields& grid, NodeRecords& records, Real dt,
-                                  PointRates& rates) {
+                                  PointRates& rates,
+                                  Kokkos::View<const unsigned char*, MemSpace> conditioned_i,
+                                  TransferScheme scheme) {
   if (rates.count() != points.count) rates.allocate(points.count);
   withShapeFamily(shapes, [&](auto family) {
-    interpolateVelocityGradientsImpl<decltype(family)>(points, shapes, liquid_m, active, grid,
-                                                       records, dt, rates);
+    if (scheme == TransferScheme::Tpic)
+      interpolateVelocityGradientsImpl<decltype(family), true>(
+          points, shapes, liquid_m, active, grid, records, dt, rates, conditioned_i);
+    else
+      interpolateVelocityGradientsImpl<decltype(family), false>(
+          points, shapes, liquid_m, active, grid, records, dt, rates, conditioned_i);
   });
 }
 

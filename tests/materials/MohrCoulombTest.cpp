@@ -122,7 +122,7 @@ TEST(MohrCoulomb, TensionCutOffFace) {
   // sigma = (2e3, -3e3, -4e3).
   Real sigma[3] = {5e3, -2e3, -3e3}, ep[3];
   EXPECT_EQ(returnToMohrCoulomb(strength(true, 2e3), kLambda, kShear, sigma, ep),
-            kMohrCoulombSurface);
+            kMohrCoulombTension);
   expectStress(sigma, 2e3, -3e3, -4e3);
   expectStress(ep, 1e-4, 0, 0, 1e-15);
   // Without the cut-off the same trial is elastic.
@@ -137,7 +137,7 @@ TEST(MohrCoulomb, TensionCutOffEdgeAndCorner) {
   // sigma = (5e3 - 2625 - 375, 4e3 - 875 - 1125, 3e3 - 875 - 375) = (2000, 2000, 1750).
   Real edge[3] = {5e3, 4e3, 3e3}, ep[3];
   EXPECT_EQ(returnToMohrCoulomb(strength(true, 2e3), kLambda, kShear, edge, ep),
-            kMohrCoulombSurface);
+            kMohrCoulombTension);
   expectStress(edge, 2000, 2000, 1750);
   // Trial (5e3, 4.5e3, 4.5e3): the edge return would give s3 = 3125 > s1 = 2000, so all three
   // at sigma_t (the tension apex).

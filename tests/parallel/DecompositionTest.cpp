@@ -88,6 +88,36 @@ TEST(RankDecomposition, SharedNodesSumOverRanks) {
   for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(owned(i), 1.0) << "node " << i;
 }
 
+TEST(RankDecomposition, GridFamiliesShareEveryNodeBothRanksPointsReach) {
+  // The 8 x 2 grid of 1 m cells on B-splines: a point reaches the nodes of its cell's
+  // neighbours (ElementFootprint). Cut between cell columns 3 and 4 on 2 ranks, rank 0's
+  // points reach node columns up to 5 and rank 1's down to 3: three node columns of 3 nodes
+  // are shared (one on linear shapes), owned by rank 0; the other nodes by the rank alone.
+  Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
+  mesh.structured.cells[0] = 8, mesh.structured.cells[1] = 2;
+  mesh.structured.spacing[0] = mesh.structured.spacing[1] = 1.0;
+  mesh.shape_functions = ShapeFamily::BSpline;
+  const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
+  const auto owned = ranks.nodeOwnedView();
+  if (worldSize() == 2) {
+    std::vector<int> expected;
+    for (int i = 0; i < mesh.numNodes(); ++i)
+      if (i % 9 >= 3 && i % 9 <= 5) expected.push_back(i);
+    EXPECT_EQ(ranks.sharedNodes(), expected);
+    ASSERT_EQ(ranks.neighbours().size(), 1u);
+    EXPECT_EQ(ranks.neighbours()[0].nodes, expected);
+    for (int i = 0; i < mesh.numNodes(); ++i)
+      EXPECT_EQ(owned(i), (i % 9 <= 5) == (ranks.rank() == 0) ? 1 : 0) << "node " << i;
+  }
+  if (worldSize() == 1) {
+    EXPECT_TRUE(ranks.sharedNodes().empty());
+  }
+  Kokkos::View<Real*, MemSpace> count("owners", mesh.numNodes());
+  for (int i = 0; i < mesh.numNodes(); ++i) count(i) = owned(i);
+  MPI_Allreduce(MPI_IN_PLACE, count.data(), mesh.numNodes(), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  for (int i = 0; i < mesh.numNodes(); ++i) EXPECT_EQ(count(i), 1.0) << "node " << i;
+}
+
 TEST(RankDecomposition, CompensatedSumsAtSharedNodesKeepWhatPlainSumsLose) {
   // Each rank holds the compensated pair (hi, lo) of its partial sum at the shared nodes:
   // rank r adds 1e16 (r even) or -1e16 (r odd) and then 1 + r. The exact total is

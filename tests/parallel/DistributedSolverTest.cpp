@@ -1,155 +1,25 @@
 // The explicit solver on all ranks of MPI_COMM_WORLD gives the one-rank answer to round-off:
 // each rank first runs the scene alone (no decomposition), then all ranks run it together;
-// the point states are gathered by id and compared. Registered on 2 ranks
+// the point states are gathered by id and compared (RanksHarness.hpp). Registered on 2 ranks
 // (parallel_two_ranks) and on 1 (the plain test_parallel run).
 #include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "../physics/Harness.hpp"
-#include "argine/init/Initialisation.hpp"
-#include "argine/input/DeckReader.hpp"
+#include "RanksHarness.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
-#include "argine/points/PointFields.hpp"
-#include "argine/simulation/MaterialChanges.hpp"
-#include "argine/simulation/Setup.hpp"
 
 namespace argine {
 namespace {
 
-constexpr int kValues = 9;  // per point: x, y, vx, vy, p_L, sxx, syy, sxy, M_L
-
-/// The point states of all ranks, by id: kValues per point.
-std::vector<Real> gatherById(const MaterialPoints& points, MPI_Comm comm, int total) {
-  std::vector<Real> mine;
-  for (int p = 0; p < points.count; ++p) {
-    mine.insert(mine.end(), {static_cast<Real>(points.id(p)), points.position(p, 0),
-                             points.position(p, 1), points.velocity_solid(p, 0),
-                             points.velocity_solid(p, 1), points.pressure_liquid(p),
-                             points.stress_effective(p, XX), points.stress_effective(p, YY),
-                             points.stress_effective(p, XY), points.mass_liquid(p)});
-  }
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<Real> all(offsets[size]);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                 comm);
-  std::vector<Real> by_id(static_cast<std::size_t>(total) * kValues,
-                          std::numeric_limits<Real>::quiet_NaN());
-  for (std::size_t k = 0; k < all.size(); k += kValues + 1) {
-    const int id = static_cast<int>(all[k]);
-    for (int v = 0; v < kValues; ++v) by_id[id * kValues + v] = all[k + 1 + v];
-  }
-  return by_id;
-}
-
-/// Largest difference of each value over the points, relative to the largest magnitude of
-/// its quantity in the one-rank result: position (x, y), velocity (v_x, v_y), p_L, effective
-/// stress (all components) and M_L each have one scale.
-std::vector<Real> relativeDifferences(const std::vector<Real>& one, const std::vector<Real>& all) {
-  const int group[kValues] = {0, 0, 1, 1, 2, 3, 3, 3, 4};
-  std::vector<Real> scale(5, 0), difference(kValues, 0);
-  const std::size_t points = one.size() / kValues;
-  for (std::size_t p = 0; p < points; ++p)
-    for (int v = 0; v < kValues; ++v) {
-      scale[group[v]] = std::max(scale[group[v]], std::abs(one[p * kValues + v]));
-      const Real d = std::abs(one[p * kValues + v] - all[p * kValues + v]);
-      difference[v] =
-          std::isnan(d) ? std::numeric_limits<Real>::infinity() : std::max(difference[v], d);
-    }
-  for (int v = 0; v < kValues; ++v) difference[v] /= scale[group[v]] > 0 ? scale[group[v]] : 1;
-  return difference;
-}
-
-/// A scene: mesh, points and materials before any step, and how to run it.
-struct Scene {
-  Mesh mesh;
-  MaterialPoints points;
-  std::vector<MaterialSpec> materials;
-  std::vector<StageSpec> stages;
-  int steps_per_stage = 200;
-  std::vector<Real> weights;  ///< partition weights per element (empty: points per element)
-  bool reproducible_sums = false;
-};
-
-struct RunResult {
-  std::vector<Real> states;  ///< gatherById
-  long long migrated = 0;
-  long long steps = 0;
-};
-
-/// A deep copy of every point field.
-MaterialPoints copyOf(const MaterialPoints& points) {
-  MaterialPoints copy;
-  copy.allocate(points.count);
-#define ARGINE_COPY_FIELD(name) Kokkos::deep_copy(copy.name, points.name);
-  ARGINE_MATERIAL_POINT_FIELDS(ARGINE_COPY_FIELD)
-#undef ARGINE_COPY_FIELD
-  return copy;
-}
-
-RunResult run(Scene scene, bool distributed) {
-  MaterialPoints copy = copyOf(scene.points);  // the solver works on a deep copy
-  const int total = copy.count;
-  ExplicitTwoPhaseSolver solver(scene.mesh, copy, scene.materials);
-  solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
-  solver.setReproducibleSums(scene.reproducible_sums);
-  std::unique_ptr<RankDecomposition> ranks;
-  if (distributed) {
-    ranks = std::make_unique<RankDecomposition>(
-        MPI_COMM_WORLD, scene.mesh,
-        scene.weights.empty() ? pointsPerElementWeights(scene.mesh, copy) : scene.weights);
-    solver.distribute(*ranks);
-  }
-  RunResult result;
-  for (const StageSpec& stage : scene.stages) {
-    solver.beginStage(stage);
-    for (int k = 0; k < scene.steps_per_stage; ++k) {
-      solver.step(solver.chooseTimeStep().time_step);
-      ++result.steps;
-    }
-  }
-  result.states = gatherById(copy, distributed ? MPI_COMM_WORLD : MPI_COMM_SELF, total);
-  result.migrated = solver.migratedPoints();
-  return result;
-}
-
-void expectSameAsOneRank(const Scene& scene, Real tolerance, long long* migrated = nullptr) {
-  const RunResult one = run(scene, false);
-  const RunResult all = run(scene, true);
-  const auto difference = relativeDifferences(one.states, all.states);
-  const char* names[kValues] = {"x", "y", "v_x", "v_y", "p_L", "s_xx", "s_yy", "s_xy", "M_L"};
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  for (int v = 0; v < kValues; ++v) {
-    EXPECT_LE(difference[v], tolerance) << names[v];
-    if (rank == 0) std::printf("  %s: largest difference / range %.3g\n", names[v], difference[v]);
-  }
-  if (migrated) *migrated = all.migrated;
-}
-
-/// The scene of a deck: its stages [first, first + count), each run for `steps` steps (the
-/// material changes of those stages applied up front).
-Scene deckScene(const std::string& relative_path, int first, int count, int steps) {
-  const Deck deck = readDeck(std::string(ARGINE_SOURCE_DIR) + "/" + relative_path);
-  Scene scene;
-  scene.mesh = loadMesh(deck);
-  scene.points = seedPoints(deck, scene.mesh);
-  initialisePoints(deck, scene.mesh, scene.points);
-  scene.materials = deck.materials;
-  for (int s = first; s < first + count && s < static_cast<int>(deck.stages.size()); ++s) {
-    scene.stages.push_back(deck.stages[s]);
-    applyMaterialChanges(deck.stages[s].name, deck.stages[s].material_changes, scene.materials);
-  }
-  scene.steps_per_stage = steps;
-  return scene;
-}
+using test::copyOf;
+using test::deckScene;
+using test::expectSameAsOneRank;
+using Scene = test::RanksScene;
 
 // The relative differences allowed: round-off of sums taken in another order (partial
 // sums per rank at the shared nodes), grown over the steps. Measured on 2 ranks (printed):
@@ -201,15 +71,7 @@ Scene slumpingSlope(Real damping) {
 
 /// The slope on all ranks against one rank (to `tolerance`); points must have migrated.
 void expectSlopeAsOneRank(const Scene& scene, Real tolerance) {
-  long long migrated = 0;
-  expectSameAsOneRank(scene, tolerance, &migrated);
-  int size = 1, rank = 0;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (size > 1) {
-    EXPECT_GT(migrated, 0) << "no point crossed the rank border";
-  }
-  if (rank == 0) std::printf("  points moved between ranks: %lld\n", migrated);
+  test::expectSameAsOneRankWithMigration(scene, tolerance);
 }
 
 TEST(DistributedSolver, CollapsingSlopeMigratesPointsAndMatchesOneRank) {

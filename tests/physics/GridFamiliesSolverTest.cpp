@@ -135,12 +135,15 @@ TEST_P(GridFamilies, UndrainedLoadGivesSkemptonPorePressure) {
 INSTANTIATE_TEST_SUITE_P(
     Families, GridFamilies,
     ::testing::Combine(::testing::Values(ShapeFamily::Gimp, ShapeFamily::BSpline),
-                       ::testing::Values(TransferScheme::Flip, TransferScheme::Apic)),
+                       ::testing::Values(TransferScheme::Flip, TransferScheme::Apic,
+                                         TransferScheme::Tpic)),
     [](const auto& info) {
       const ShapeFamily family = std::get<0>(info.param);
       const TransferScheme scheme = std::get<1>(info.param);
       return std::string(family == ShapeFamily::Gimp ? "Gimp" : "BSpline") +
-             (scheme == TransferScheme::Apic ? "Apic" : "Flip");
+             (scheme == TransferScheme::Apic   ? "Apic"
+              : scheme == TransferScheme::Tpic ? "Tpic"
+                                               : "Flip");
     });
 
 }  // namespace

@@ -68,6 +68,7 @@ void randomise(MaterialPoints& points, PointRates& rates, unsigned seed) {
       rates.strain_increment_p(p, c) = c == ZZ ? 0 : 1e-3 * u(rng);
     }
     points.plastic_strain(p) = 1e-3 * (1 + u(rng));
+    points.separation(p) = p % 4 == 1 ? 1e-3 * (1 + u(rng)) : 0;  // some open gaps
     for (int d = 0; d < kDim; ++d) {
       points.position(p, d) = u(rng);
       points.displacement(p, d) = 0.01 * u(rng);
@@ -85,6 +86,7 @@ void updateOneByOne(const MaterialTable& table, const PointRates& rates, Materia
   const PointUpdateViews v{table.materials(), points, rates, hold};
   for (int p = 0; p < points.count; ++p) {
     if (points.element(p) < 0) continue;
+    closeSeparation(v, p);
     updatePorosityAndVolume(v, p);
     updateLiquidPressure(v, p);
     updateEffectiveStress(v, p);
@@ -109,8 +111,18 @@ TEST(PointUpdateLanes, EveryPointGetsTheOnePointBits) {
           if (std::string(name) == other) Kokkos::deep_copy(target, field);
       });
     });
+    // the gap closure rewrites a point's strain increment: each path its own copy
+    PointRates reference_rates;
+    reference_rates.allocate(count);
+    Kokkos::deep_copy(reference_rates.strain_increment_p, rates.strain_increment_p);
+    Kokkos::deep_copy(reference_rates.spin_increment_p, rates.spin_increment_p);
+    Kokkos::deep_copy(reference_rates.displacement_increment_p, rates.displacement_increment_p);
+    Kokkos::deep_copy(reference_rates.liquid_divergence_increment_p,
+                      rates.liquid_divergence_increment_p);
+    Kokkos::deep_copy(reference_rates.content_flux_divergence_increment_p,
+                      rates.content_flux_divergence_increment_p);
     const PointTotals totals = updatePointStates(table, rates, lanes, hold);
-    updateOneByOne(table, rates, reference, hold);
+    updateOneByOne(table, reference_rates, reference, hold);
 
     int plastic = 0, invalid = 0;
     Real liquid_mass = 0;

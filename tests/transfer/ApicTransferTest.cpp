@@ -283,6 +283,17 @@ TEST_P(ApicOnShape, AffineVelocityOfALinearFieldIsItsGradient) {
           << "node " << i;
 }
 
+TEST_P(ApicOnShape, TpicKeepsLinearMomentumAndTakesTheGridVelocity) {
+  // TPIC: v_p = sum N v~_i, the remap without C; the linear momentum of the round trip is
+  // kept to round-off (sum N = 1), and a point's velocity is the grid's interpolation.
+  Scene s = makeScene(GetParam(), 3);
+  const RoundTrip r = roundTrip(s, TransferSettings{TransferScheme::Tpic, {}, s.mesh.coordinates});
+  for (int d = 0; d < kDim; ++d) {
+    EXPECT_NEAR(r.solid_after.linear[d], r.solid_before.linear[d], 1e-14 * r.solid_scale);
+    EXPECT_NEAR(r.liquid_after.linear[d], r.liquid_before.linear[d], 1e-14 * r.liquid_scale);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Shapes, ApicOnShape,
                          ::testing::Values(ElementType::Tri3, ElementType::Quad4),
                          [](const auto& info) {

@@ -709,7 +709,7 @@ TEST(NodeRecords, SumsGoToTheirGridFieldsAtListedNodesAndAreZeroedThere) {
   EXPECT_EQ(values(4, kReadVelocitySolid), 4.25);
   EXPECT_EQ(values(4, kReadVelocitySolid + 1), -4.0);
   EXPECT_EQ(values(3, kReadAccelerationLiquid + 1), 21.0);
-  readStrainValues(active, grid, records);
+  readStrainValues(active, grid, {}, records);
   values = hostCopy(records.values_i);
   EXPECT_EQ(values(1, kReadStrainVelocitySolid), 1.25);
   EXPECT_EQ(values(1, kReadStrainLiquidContent), 990.0);

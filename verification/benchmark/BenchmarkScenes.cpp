@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 
@@ -98,6 +99,39 @@ BoundarySpec impermeable(const std::string& set) {
   return b;
 }
 
+constexpr const char* kSchemePrefix = "quad4-mohr-coulomb-";
+
+/// The quad4-mohr-coulomb block.
+Scene mohrCoulombBlock(const std::string& name) {
+  Scene scene = makeBlockScene(name, ElementType::Quad4, 160, 160, PhaseModel::Saturated);
+  for (auto& material : scene.materials) {
+    material.solid.model = SolidModel::MohrCoulomb;
+    material.solid.cohesion = 5e3;
+    material.solid.friction_angle = 30 * M_PI / 180;
+    material.solid.dilatancy_angle = 0;
+  }
+  return scene;
+}
+
+/// quad4-mohr-coulomb-<shapes>-<transfer> (BenchmarkScenes.hpp).
+Scene schemeScene(const std::string& name) {
+  const std::string scheme = name.substr(std::string(kSchemePrefix).size());
+  const std::size_t dash = scheme.find('-');
+  const std::string shapes = scheme.substr(0, dash);
+  const std::string transfer = dash == std::string::npos ? "" : scheme.substr(dash + 1);
+  if ((shapes != "linear" && shapes != "gimp" && shapes != "bspline") ||
+      (transfer != "flip" && transfer != "apic"))
+    throw std::invalid_argument("unknown scene '" + name + "'");
+  Scene scene = mohrCoulombBlock(name);
+  if (shapes != "linear") {  // the block's mesh as generateRectangle describes a grid
+    scene.mesh.structured.cells[0] = scene.mesh.structured.cells[1] = 160;
+    scene.mesh.structured.spacing[0] = scene.mesh.structured.spacing[1] = kCell;
+    scene.mesh.shape_functions = shapes == "gimp" ? ShapeFamily::Gimp : ShapeFamily::BSpline;
+  }
+  scene.stage.transfer = transfer == "apic" ? TransferScheme::Apic : TransferScheme::Flip;
+  return scene;
+}
+
 }  // namespace
 
 Scene makeBlockScene(const std::string& name, ElementType type, int cells, int soil_cells,
@@ -143,17 +177,32 @@ Scene makeScene(const std::string& name) {
     return makeBlockScene(name, ElementType::Quad4, 4, 2, PhaseModel::Saturated);
   if (name == "quad4-unsaturated")
     return makeBlockScene(name, ElementType::Quad4, 160, 160, PhaseModel::Unsaturated);
-  if (name == "quad4-mohr-coulomb") {  // the return mapping at every point (not in the list)
-    Scene scene = makeBlockScene(name, ElementType::Quad4, 160, 160, PhaseModel::Saturated);
-    for (auto& material : scene.materials) {
-      material.solid.model = SolidModel::MohrCoulomb;
-      material.solid.cohesion = 5e3;
-      material.solid.friction_angle = 30 * M_PI / 180;
-      material.solid.dilatancy_angle = 0;
-    }
-    return scene;
-  }
+  if (name == "quad4-mohr-coulomb")  // the return mapping at every point (not in the list)
+    return mohrCoulombBlock(name);
+  if (name.rfind(kSchemePrefix, 0) == 0) return schemeScene(name);
   throw std::invalid_argument("unknown scene '" + name + "'");
+}
+
+std::vector<std::string> schemeSceneNames() {
+  std::vector<std::string> names;
+  for (const char* shapes : {"linear", "gimp", "bspline"})
+    for (const char* transfer : {"flip", "apic"})
+      names.push_back(std::string(kSchemePrefix) + shapes + "-" + transfer);
+  return names;
+}
+
+std::vector<std::string> parseSceneList(const std::string& list) {
+  std::vector<std::string> scenes;
+  std::stringstream words(list);
+  for (std::string word; std::getline(words, word, ',');) {
+    if (word == "schemes") {
+      const auto schemes = schemeSceneNames();
+      scenes.insert(scenes.end(), schemes.begin(), schemes.end());
+    } else {
+      scenes.push_back(word);
+    }
+  }
+  return scenes;
 }
 
 void shufflePoints(MaterialPoints& points) {

@@ -17,6 +17,12 @@
 ///                       the return mapping at every point (not in the default list)
 ///   quad4-tiny          2 x 2 quads of points in a 4 x 4 mesh (16 points): the fixed cost
 ///                       of a step (not in the default list)
+///   quad4-mohr-coulomb-<shapes>-<transfer>
+///                       quad4-mohr-coulomb with the transfers on <shapes> = linear, gimp or
+///                       bspline (the mesh then a StructuredGrid) and <transfer> = flip or
+///                       apic: what each scheme costs (issue P9 item 8; "schemes" on the
+///                       command line names all six; not in the default list).
+///                       quad4-mohr-coulomb-linear-flip is quad4-mohr-coulomb, bit for bit
 ///
 /// Materials: linear elastic, E = 10 MPa, nu = 0.3, n = 0.4, rho_S = 2650 kg/m^3,
 /// k_sat = 1e-3 m/s, K_L = 2.2 GPa. Time step: the deck defaults (automatic, Mieremet and
@@ -47,6 +53,13 @@ std::vector<std::string> sceneNames();
 
 /// Builds one scene by name; std::invalid_argument for an unknown name.
 Scene makeScene(const std::string& name);
+
+/// The six quad4-mohr-coulomb-<shapes>-<transfer> scenes: linear, gimp, bspline, each with
+/// flip then apic.
+std::vector<std::string> schemeSceneNames();
+
+/// The scenes of a comma-separated list, "schemes" standing for schemeSceneNames().
+std::vector<std::string> parseSceneList(const std::string& list);
 
 /// A scene of the same kind at any size: a cells x cells mesh of 0.1 m elements whose lower
 /// left soil_cells x soil_cells block holds points (4 per quad, 3 per triangle) of one

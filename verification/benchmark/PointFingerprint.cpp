@@ -14,11 +14,13 @@ namespace {
 constexpr unsigned long long kOffset = 1469598103934665603ULL;  // FNV-1a 64-bit
 constexpr unsigned long long kPrime = 1099511628211ULL;
 
-/// Whether a field is one of APIC's affine velocity matrices: zero and unread in FLIP runs,
-/// hashed only when some value is not +0, so that a FLIP run's fingerprint is the one of the
-/// builds before APIC existed (the bits of the other fields are what the fingerprint checks).
+/// Whether a field was added in P9 and is zero where its feature is unused (APIC's affine
+/// velocity matrices in FLIP runs, the separation of points that never opened): hashed only
+/// when some value is not +0, so that such a run's fingerprint is the one of the builds
+/// before the field existed (the bits of the other fields are what the fingerprint checks).
 bool skippedWhenZero(const std::string& name) {
-  return name == "affine_velocity_solid" || name == "affine_velocity_liquid";
+  return name == "affine_velocity_solid" || name == "affine_velocity_liquid" ||
+         name == "separation";
 }
 
 /// Calls visit(p, bytes, size) with the bit pattern of point p's value of every point field,

@@ -10,6 +10,9 @@
 ///                    [--repeat 3] [--warmup 5] [--sort-interval N] [--update-interval 1]
 ///                    [--shuffle] [--reproducible-sums] [--dump PREFIX]
 ///
+/// --scenes schemes: the Mohr-Coulomb block on each shape family and velocity transfer
+/// (BenchmarkScenes.hpp); with several scenes a closing table lists each one's rates and
+/// fingerprint.
 /// --sort-interval: steps between sorts of the points by element (0: never; default the
 /// solver's recommended interval). --update-interval: recompute the critical time step every
 /// N steps (the deck's Time Step/Update Interval; default 1 as in the deck). --shuffle:
@@ -95,8 +98,17 @@ void dumpPoints(const MaterialPoints& points, const std::string& path) {
   std::fclose(out);
 }
 
-/// Runs one scene; returns false when a rate is not finite and positive.
-bool runScene(const std::string& name, const Settings& settings, const std::string& dump) {
+/// What a scene gave, for the closing table.
+struct SceneResult {
+  std::string name;
+  double wall_rate = 0;  ///< point updates per wall second, median repeat
+  double cpu_rate = 0;   ///< per process CPU second (per core: the step is serial)
+  unsigned long long fingerprint = 0;
+  bool finite = false;  ///< every rate finite and positive
+};
+
+/// Runs one scene.
+SceneResult runScene(const std::string& name, const Settings& settings, const std::string& dump) {
   Scene scene = makeScene(name);
   if (settings.shuffle) shufflePoints(scene.points);
   scene.stage.time_step.update_interval = settings.update_interval;
@@ -151,9 +163,17 @@ bool runScene(const std::string& name, const Settings& settings, const std::stri
   std::printf("  all repeats, CPU rate: %s\n", cpu_rates.str().c_str());
   std::printf("  profile of the median repeat:\n%s", median.profile.describe("    ").c_str());
   // Equal fingerprints = bit-for-bit equal point states (same scene, steps and settings).
-  std::printf("  final state fingerprint %016llx\n\n", fingerprint(scene.points));
+  const unsigned long long hash = fingerprint(scene.points);
+  std::printf("  final state fingerprint %016llx\n\n", hash);
   if (!dump.empty()) dumpPoints(scene.points, dump + "_" + name + ".txt");
-  return finite;
+  return {name, updates / median.wall, updates / median.cpu, hash, finite};
+}
+
+void printSummary(const std::vector<SceneResult>& results) {
+  std::printf("%-34s %14s %14s  %s\n", "scene", "updates/s", "per core (CPU)", "fingerprint");
+  for (const SceneResult& r : results)
+    std::printf("%-34s %14.3g %14.3g  %016llx\n", r.name.c_str(), r.wall_rate, r.cpu_rate,
+                r.fingerprint);
 }
 
 int run(int argc, char** argv) {
@@ -171,15 +191,16 @@ int run(int argc, char** argv) {
       static_cast<int>(options.number("update-interval", settings.update_interval));
   settings.shuffle = options.has("shuffle");
   settings.reproducible_sums = options.has("reproducible-sums");
-  std::vector<std::string> scenes = sceneNames();
-  if (options.has("scenes")) {
-    scenes.clear();
-    std::stringstream list(options.text("scenes", ""));
-    for (std::string word; std::getline(list, word, ',');) scenes.push_back(word);
-  }
+  const std::vector<std::string> scenes =
+      options.has("scenes") ? parseSceneList(options.text("scenes", "")) : sceneNames();
   bool ok = true;
   const std::string dump = options.text("dump", "");
-  for (const std::string& scene : scenes) ok = runScene(scene, settings, dump) && ok;
+  std::vector<SceneResult> results;
+  for (const std::string& scene : scenes) {
+    results.push_back(runScene(scene, settings, dump));
+    ok = results.back().finite && ok;
+  }
+  if (results.size() > 1) printSummary(results);
   return ok ? 0 : 1;
 }
 

@@ -7,13 +7,17 @@
 /// point balance, the nodal exchange traffic per step and the points migrated.
 ///
 ///   mpiexec -n 2 argine_benchmark_ranks [--scenes levee_drawdown,block-1e6] [--steps N]
-///                                       [--warmup 5] [--repeat 3]
+///                                       [--warmup 5] [--repeat 3] [--reproducible-sums]
 ///
 /// Scenes: levee_drawdown = the 'drawdown' stage of inputs/levee_drawdown (Mohr-Coulomb,
 /// unsaturated, total head with a seepage face; 2,757 points) from its K0 state, 400 steps;
 /// block-1e6 = a saturated Mohr-Coulomb block of 500 x 500 quads, 4 points each (1,000,000
-/// points) in a 520 x 520 mesh, 10 steps. Speed is never judged: exit 0 when the rates are
-/// finite and positive.
+/// points) in a 520 x 520 mesh, 10 steps; any scene of argine_benchmark (BenchmarkScenes.hpp,
+/// ~1e5 points), 50 steps; "schemes" = the Mohr-Coulomb block on each shape family and
+/// velocity transfer. --reproducible-sums: the deck's `Parallel: {Reproducible Sums: true}`,
+/// with which the fingerprints of 1 and N ranks must be equal (else exit 1). With several
+/// scenes a closing table lists the rates and whether the fingerprints agree. Speed is never
+/// judged: exit 0 when the rates are finite and positive.
 
 #include <mpi.h>
 #include <unistd.h>
@@ -67,6 +71,19 @@ Problem leveeDrawdown() {
   return problem;
 }
 
+/// A scene of argine_benchmark (BenchmarkScenes.hpp).
+Problem benchmarkScene(const std::string& name) {
+  Scene scene = makeScene(name);
+  Problem problem;
+  problem.name = name;
+  problem.mesh = scene.mesh;
+  problem.points = scene.points;
+  problem.materials = scene.materials;
+  problem.stage = scene.stage;
+  problem.steps = 50;
+  return problem;
+}
+
 Problem millionPointBlock() {
   Scene scene = makeBlockScene("block-1e6", ElementType::Quad4, 520, 500, PhaseModel::Saturated);
   Problem problem;
@@ -115,10 +132,20 @@ struct Timing {
   unsigned long long fingerprint = 0;  ///< additiveFingerprint of the final state, all ranks
 };
 
-Timing timeSteps(const Problem& problem, MPI_Comm comm, bool distributed, int warmup, int repeat) {
+/// How the steps are run and timed.
+struct Settings {
+  int warmup = 5;
+  int repeat = 3;
+  bool reproducible_sums = false;
+};
+
+Timing timeSteps(const Problem& problem, MPI_Comm comm, bool distributed,
+                 const Settings& settings) {
+  const int warmup = settings.warmup, repeat = settings.repeat;
   MaterialPoints points = deepCopy(problem.points);
   ExplicitTwoPhaseSolver solver(problem.mesh, points, problem.materials);
   solver.setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);
+  solver.setReproducibleSums(settings.reproducible_sums);
   std::unique_ptr<RankDecomposition> ranks;
   if (distributed) {
     ranks = std::make_unique<RankDecomposition>(comm, problem.mesh,
@@ -155,7 +182,17 @@ Timing timeSteps(const Problem& problem, MPI_Comm comm, bool distributed, int wa
   return median;
 }
 
-bool runProblem(const Problem& problem, int warmup, int repeat) {
+/// What a scene gave, for the closing table (rank 0).
+struct ProblemResult {
+  std::string name;
+  double rate_one = 0;  ///< point updates/s on one rank
+  double rate_all = 0;  ///< per rank on all ranks
+  bool same_bits = false;
+  bool finite = false;
+};
+
+ProblemResult runProblem(const Problem& problem, const Settings& settings) {
+  const int warmup = settings.warmup, repeat = settings.repeat;
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
@@ -163,11 +200,11 @@ bool runProblem(const Problem& problem, int warmup, int repeat) {
 
   // One rank: rank 0 alone, the others wait quietly.
   Timing one;
-  if (rank == 0) one = timeSteps(problem, MPI_COMM_SELF, false, warmup, repeat);
+  if (rank == 0) one = timeSteps(problem, MPI_COMM_SELF, false, settings);
   quietBarrier(MPI_COMM_WORLD);
   MPI_Bcast(&one.wall, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
 
-  const Timing all = timeSteps(problem, MPI_COMM_WORLD, true, warmup, repeat);
+  const Timing all = timeSteps(problem, MPI_COMM_WORLD, true, settings);
   std::vector<long long> points(size), bytes(size);
   std::vector<double> cpu(size);
   MPI_Gather(&all.points, 1, MPI_LONG_LONG, points.data(), 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
@@ -179,9 +216,9 @@ bool runProblem(const Problem& problem, int warmup, int repeat) {
   if (rank == 0) {
     std::printf(
         "scene %s: %d points, %d elements, %d steps x %d repeats (median) after %d "
-        "warm-up steps\n",
+        "warm-up steps%s\n",
         problem.name.c_str(), problem.points.count, problem.mesh.numElements(), problem.steps,
-        repeat, warmup);
+        repeat, warmup, settings.reproducible_sums ? ", reproducible sums" : "");
     std::printf("  1 rank : wall %.3f s, %.3g point updates/s (CPU %.3f s, %.3g /s)\n", one.wall,
                 rate_one, one.cpu, updates / one.cpu);
     std::printf("  %d ranks: wall %.3f s, %.3g point updates/s PER RANK (%.3g in all)\n", size,
@@ -210,7 +247,23 @@ bool runProblem(const Problem& problem, int warmup, int repeat) {
     std::printf("  profile, rank 0 of %d:\n%s\n", size, all.profile.describe("    ").c_str());
     std::fflush(stdout);
   }
-  return std::isfinite(rate_one) && rate_one > 0 && std::isfinite(rate_all) && rate_all > 0;
+  MPI_Bcast(&one.fingerprint, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+  ProblemResult result;
+  result.name = problem.name;
+  result.rate_one = rate_one;
+  result.rate_all = rate_all;
+  result.same_bits = one.fingerprint == all.fingerprint;
+  result.finite =
+      std::isfinite(rate_one) && rate_one > 0 && std::isfinite(rate_all) && rate_all > 0;
+  return result;
+}
+
+void printSummary(const std::vector<ProblemResult>& results, int size) {
+  std::printf("%-34s %14s %16s %9s  %s\n", "scene", "1 rank, /s", "per rank (of N)", "speed-up",
+              "same bits on 1 and N ranks");
+  for (const ProblemResult& r : results)
+    std::printf("%-34s %14.3g %16.3g %9.2f  %s\n", r.name.c_str(), r.rate_one, r.rate_all,
+                r.rate_all * size / r.rate_one, r.same_bits ? "yes" : "no");
 }
 
 /// Mean time of one Allreduce of 8 doubles over MPI_COMM_WORLD (s): the latency each of a
@@ -225,15 +278,15 @@ double allreduceLatency(int repeats) {
 }
 
 int run(int argc, char** argv) {
-  const verification::CommandLine options(argc, argv, {"scenes", "steps", "warmup", "repeat"});
-  const int warmup = static_cast<int>(options.number("warmup", 5));
-  const int repeat = std::max(1, static_cast<int>(options.number("repeat", 3)));
-  std::vector<std::string> scenes{"levee_drawdown", "block-1e6"};
-  if (options.has("scenes")) {
-    scenes.clear();
-    std::stringstream list(options.text("scenes", ""));
-    for (std::string word; std::getline(list, word, ',');) scenes.push_back(word);
-  }
+  const verification::CommandLine options(
+      argc, argv, {"scenes", "steps", "warmup", "repeat", "reproducible-sums"});
+  Settings settings;
+  settings.warmup = static_cast<int>(options.number("warmup", settings.warmup));
+  settings.repeat = std::max(1, static_cast<int>(options.number("repeat", settings.repeat)));
+  settings.reproducible_sums = options.has("reproducible-sums");
+  const std::vector<std::string> scenes =
+      options.has("scenes") ? parseSceneList(options.text("scenes", ""))
+                            : std::vector<std::string>{"levee_drawdown", "block-1e6"};
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
@@ -246,11 +299,18 @@ int run(int argc, char** argv) {
                 1e6 * latency, load.c_str());
   }
   bool ok = true;
+  std::vector<ProblemResult> results;
   for (const auto& name : scenes) {
-    Problem problem = name == "levee_drawdown" ? leveeDrawdown() : millionPointBlock();
+    Problem problem = name == "levee_drawdown" ? leveeDrawdown()
+                      : name == "block-1e6"    ? millionPointBlock()
+                                               : benchmarkScene(name);
     if (options.has("steps")) problem.steps = static_cast<int>(options.number("steps", 10));
-    ok = runProblem(problem, warmup, repeat) && ok;
+    results.push_back(runProblem(problem, settings));
+    ok = results.back().finite && ok;
+    // Reproducible sums do not depend on the number of ranks: different bits are a bug.
+    if (settings.reproducible_sums && !results.back().same_bits) ok = false;
   }
+  if (rank == 0 && results.size() > 1) printSummary(results, size);
   return ok ? 0 : 1;
 }
 

@@ -90,6 +90,7 @@ ColumnProfile ColumnRun::profile() const {
   profile.saturation = scalar(points_.saturation);
   profile.displacement = column(points_.displacement, 1);
   profile.strain_yy = column(points_.strain, YY);
+  profile.stress_yy = column(points_.stress_effective, YY);
   profile.volume = scalar(points_.volume);
   profile.liquid_mass = scalar(points_.mass_liquid);
   return profile;

@@ -30,6 +30,7 @@ struct ColumnProfile {
   std::vector<double> saturation;    ///< S_L (-)
   std::vector<double> displacement;  ///< solid displacement u_y (m)
   std::vector<double> strain_yy;     ///< accumulated vertical strain (-, tension positive)
+  std::vector<double> stress_yy;     ///< vertical effective stress (Pa, tension positive)
   std::vector<double> volume;        ///< V (m^3 per m thickness)
   std::vector<double> liquid_mass;   ///< M_L (kg per m thickness)
 };

@@ -73,6 +73,7 @@ inline constexpr DeckWord<ShapeFamily> kShapeFamilyWords[] = {
 inline constexpr DeckWord<TransferScheme> kTransferSchemeWords[] = {
     {"FLIP", TransferScheme::Flip},
     {"APIC", TransferScheme::Apic},
+    {"TPIC", TransferScheme::Tpic},
 };
 
 inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {

@@ -39,8 +39,11 @@ namespace argine {
 
 /// Return regions of returnToMohrCoulomb (plastic_state values, see SolidModel.hpp).
 inline constexpr int kMohrCoulombElastic = 0;  ///< trial admissible
-inline constexpr int kMohrCoulombSurface = 1;  ///< plane, edge or cut-off face/edge/corner
+inline constexpr int kMohrCoulombSurface = 1;  ///< Mohr-Coulomb plane or edge
 inline constexpr int kMohrCoulombApex = 2;     ///< all three principal stresses equal
+/// A face, edge or corner of the tension cut-off (with or without a Mohr-Coulomb plane): a
+/// tensile crack, whose plastic strain opens it.
+inline constexpr int kMohrCoulombTension = 3;
 
 /// The strength of one point: c (Pa), phi and psi (rad), tension cut-off sigma_t (Pa).
 struct MohrCoulombStrength {
@@ -229,7 +232,7 @@ KOKKOS_INLINE_FUNCTION MohrCoulombTrialCheck<T> checkMohrCoulombTrial(
 /// to the Mohr-Coulomb surface in place (file comment); lambda, G the elastic constants,
 /// `factors` = mohrCoulombFactors(strength). Writes the principal plastic strain increment
 /// D^-1 (sigma_trial - sigma) to plastic_strain and returns the region (kMohrCoulombElastic,
-/// Surface or Apex).
+/// Surface, Apex or Tension).
 KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& strength,
                                                const MohrCoulombFactors& factors, Real lambda,
                                                Real shear_modulus, Real sigma[3],
@@ -261,6 +264,7 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
     int n = 0;
     while (n < 3 && sets[s][n] >= 0) ++n;
     found = tryActiveSet(planes, n, sets[s], lambda, two_g, cutoff, tolerance, trial, out);
+    if (found && s >= 3) region = kMohrCoulombTension;  // the sets with a cut-off plane
     if (found && n == 3 && sets[s][0] == kT1 && sets[s][2] == kT3) region = kMohrCoulombApex;
   }
   if (!found) {  // apex region: MC apex, or with the cut-off all three at sigma_t

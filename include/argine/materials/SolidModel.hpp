@@ -18,10 +18,17 @@
 
 namespace argine {
 
-/// plastic_state values (points/MaterialPoints.hpp: 0 elastic, 1 plastic, 2 apex).
+/// plastic_state values (points/MaterialPoints.hpp: 0 elastic, 1 plastic, 2 apex, 3 tension
+/// cut-off).
 inline constexpr int kPlasticStateElastic = kMohrCoulombElastic;
-inline constexpr int kPlasticStatePlastic = kMohrCoulombSurface;  ///< plane, edge, cut-off
+inline constexpr int kPlasticStatePlastic = kMohrCoulombSurface;  ///< Mohr-Coulomb plane, edge
 inline constexpr int kPlasticStateApex = kMohrCoulombApex;
+inline constexpr int kPlasticStateTension = kMohrCoulombTension;  ///< cut-off: a tensile crack
+/// Whether a point of this plastic state is separating from its neighbours: a return to the
+/// apex or to the tension cut-off, where the material carries no more tension.
+KOKKOS_INLINE_FUNCTION constexpr bool isSeparating(int plastic_state) {
+  return plastic_state == kPlasticStateApex || plastic_state == kPlasticStateTension;
+}
 /// A model without a stress update (none at present; kept for models added later).
 inline constexpr int kPlasticStateUnsupported = -1;
 
@@ -91,7 +98,7 @@ KOKKOS_INLINE_FUNCTION SolidConstants solidConstants(const SolidSpec& spec) {
 /// Update the Bishop effective stress (Pa, tension positive; xx, yy, zz, xy) of one point
 /// by the strain increment dstrain (tensor shear in [3], see LinearElastic.hpp). `suction`
 /// (Pa, s = -p_L) feeds the suction-dependent model; `constants` = solidConstants(spec).
-/// Sets plastic_state (0 elastic, 1 plastic on a plane/edge/cut-off, 2 apex) and adds the
+/// Sets plastic_state (0 elastic, 1 plastic on a plane/edge, 2 apex, 3 cut-off) and adds the
 /// equivalent plastic strain of the increment to plastic_strain. Returns false (NaN stress,
 /// kPlasticStateUnsupported) only for a model without an update.
 KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec,

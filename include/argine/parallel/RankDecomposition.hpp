@@ -6,11 +6,13 @@
 ///    weighted by the points each element holds at the start), identically on every rank;
 ///  - a material point lives on the rank that owns its element (points migrate when they
 ///    cross into another rank's element, PointMigration.hpp);
-///  - nodal arrays keep one entry per mesh node on every rank; a node touched by elements of
-///    several ranks is SHARED: its P2G sums are completed by a neighbour exchange
-///    (NodalExchange.hpp) so that every rank holding it sees the same value, bit for bit;
-///  - each node is OWNED by the lowest rank among the owners of its elements; sums over
-///    nodes (boundary fluxes) count a node on its owner only.
+///  - nodal arrays keep one entry per mesh node on every rank; a node in the FOOTPRINT of
+///    elements of several ranks (the nodes their points can reach, mesh/ElementFootprint.hpp:
+///    the element's nodes on linear shapes, the 4 x 4 block around it on GIMP and B-spline)
+///    is SHARED: its P2G sums are completed by a neighbour exchange (NodalExchange.hpp) so
+///    that every rank holding it sees the same value, bit for bit;
+///  - each node is OWNED by the lowest rank among the owners of the elements whose footprint
+///    holds it; sums over nodes (boundary fluxes) count a node on its owner only.
 /// With one rank nothing is shared and the step is the serial one.
 
 #include <mpi.h>
@@ -57,13 +59,13 @@ class RankDecomposition {
   /// Elements this rank owns.
   int ownedElements() const { return owned_elements_; }
 
-  /// Nodes of this rank's elements that elements of other ranks touch too, ascending.
+  /// Nodes in the footprint of this rank's elements and of another rank's, ascending.
   const std::vector<int>& sharedNodes() const { return shared_nodes_; }
   Kokkos::View<const int*, MemSpace> sharedNodeView() const { return shared_nodes_i_; }
   /// Ranks sharing nodes with this one, ascending.
   const std::vector<RankNeighbour>& neighbours() const { return neighbours_; }
-  /// 1 at the nodes this rank owns (the lowest rank among the owners of the node's
-  /// elements), else 0; a node of no element is owned by rank 0.
+  /// 1 at the nodes this rank owns (the lowest rank among the owners of the elements whose
+  /// footprint holds the node), else 0; a node in no footprint is owned by rank 0.
   Kokkos::View<const unsigned char*, MemSpace> nodeOwnedView() const { return node_owned_i_; }
 
  private:

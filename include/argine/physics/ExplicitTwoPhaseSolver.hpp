@@ -312,6 +312,11 @@ class ExplicitTwoPhaseSolver {
   /// Per entry of hydraulic_.corrections(): the node's impermeable-lock bits (the flux
   /// correction acts in the free directions only), refreshed with each plan.
   Kokkos::View<unsigned*, MemSpace> correction_locks_;
+  /// 1 at the nodes the current plan's hydraulic conditions act on (loads, corrections): a
+  /// point touching one is not alone for the liquid (interpolateVelocityGradients).
+  Kokkos::View<unsigned char*, MemSpace> conditioned_i_;
+  void markConditionedNodes(Kokkos::View<const int*, MemSpace> corrected,
+                            Kokkos::View<const int*, MemSpace> loaded);
   bool free_boundary_stale_ = true;      ///< a point changed element since the last detection
   bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
   Real planned_gravity_ = 0;             ///< the gravity of that plan

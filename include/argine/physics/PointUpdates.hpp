@@ -26,6 +26,25 @@ struct PointUpdateViews {
   bool hold_liquid_pressure = false;  ///< `Liquid Pressure: held`: p_L, rho_L, S_L kept
 };
 
+/// Before step 6: a point that opened from its neighbours (separation > 0, separateFrom-
+/// Neighbours) and is now compressed closes that gap first: the step's volumetric strain, up
+/// to the gap, is the gap closing, not the point's skeleton compressing, so it is taken out
+/// of the step's strain increment (isotropically in the plane: the shear and the deviatoric
+/// part pass unchanged) for the volume, the liquid and the stress updates that follow, and
+/// the gap shrinks by it. Without it, grains that parted and came back together were
+/// compressed as if they had never parted (and an unsaturated point's p_L jumped).
+KOKKOS_INLINE_FUNCTION void closeSeparation(const PointUpdateViews& v, int p) {
+  const Real gap = v.points.separation(p);
+  if (!(gap > 0)) return;
+  const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
+                          v.rates.strain_increment_p(p, ZZ);
+  if (!(volumetric < 0)) return;
+  const Real closure = -volumetric < gap ? -volumetric : gap;
+  v.rates.strain_increment_p(p, XX) += closure / 2;  // plane strain: zz stays 0
+  v.rates.strain_increment_p(p, YY) += closure / 2;
+  v.points.separation(p) = gap - closure;
+}
+
 /// Step 6 (done first, the mass balance needs the new pore volume), solid mass balance
 /// (4.9): V <- V (1 + d eps_vol), and n from (1 - n) V = const, so the solid mass
 /// (1 - n) rho_S V is kept exactly. T = Real: point p; Lanes: points p .. p + kLanes - 1.
@@ -106,6 +125,67 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v,
   store(v.points.mass_liquid, p, mass);
 }
 
+/// The opening of a return to the apex or the tension cut-off (isSeparating): the part of the
+/// step's volumetric strain that the stress did not follow elastically, d eps_vol - (p' after
+/// - p' before) / K, K = lambda + 2 G / 3 (p' the mean effective stress, rotation excluded:
+/// it keeps the trace). The trial lay where the material carries no more tension: this is the
+/// point separating from its neighbours (a crack, grains parting), not a strain of its own
+/// skeleton. (At an edge of the cut-off with a Mohr-Coulomb plane the plane's dilatancy, psi
+/// > 0, is counted with it.)
+KOKKOS_INLINE_FUNCTION Real separationOpening(const SolidConstants& constants,
+                                              const Real dstrain[kStressComponents],
+                                              Real mean_before, Real mean_after) {
+  const Real bulk = constants.lambda + 2 * constants.shear_modulus / 3;
+  const Real volumetric = dstrain[XX] + dstrain[YY] + dstrain[ZZ];
+  return volumetric - (mean_after - mean_before) / bulk;
+}
+
+/// Whether a point of this phase model and plastic state keeps its opening out of its volume
+/// (separateFromNeighbours):
+///  - dry: at the apex and at the tension cut-off (grains part, a crack opens);
+///  - unsaturated: at the apex only, a point pulled apart all round (air fills the opening).
+///    A crack at the cut-off stays air-filled pore space of the point: excluded, the lateral
+///    squeeze that usually comes with it compressed the nearly saturated pores of the levee
+///    crest to p_L = +75 kPa within 0.2 s of the settle stage and the point flew off at 4.5 m/s
+///    (the opening's volume keeps S_L down there);
+///  - saturated: never; water fills the opening, its dilation is the liquid's business (4.12).
+KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(PhaseModel phase, int plastic_state) {
+  if (phase == PhaseModel::Dry) return isSeparating(plastic_state);
+  return phase == PhaseModel::Unsaturated && plastic_state == kPlasticStateApex;
+}
+
+/// Step 6 corrected at a separating return (keepsOpeningOut): the opening (separationOpening)
+/// is space between the points, not porosity, so the point keeps the volume its stress
+/// followed: V <- V (1 + d eps_vol - opening) / (1 + d eps_vol), n again from (1 - n) V =
+/// const, and the opening joins the point's separation (closeSeparation closes it first when
+/// the point is compressed again). Without it an open point's porosity ratchets up (opening is
+/// free, closing again costs elastic stress): points at the surface of a psi = 0 collapse
+/// reached n = 0.99 and the whole body +17 to +72 % of volume, and their light weight cut the
+/// time step tenfold (doc/theory.md). An unsaturated point's content, and so its p_L, stays
+/// that of its own pores.
+KOKKOS_INLINE_FUNCTION void separateFromNeighbours(const PointUpdateViews& v, int p,
+                                                   const PointMaterial& material, int plastic_state,
+                                                   Real opening) {
+  if (!(opening > 0) || !keepsOpeningOut(material.phase, plastic_state)) return;
+  const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
+                          v.rates.strain_increment_p(p, ZZ);
+  const Real ratio = (1 + volumetric - opening) / (1 + volumetric);  // kept / kinematic
+  v.points.separation(p) += opening;
+  v.points.volume(p) *= ratio;
+  v.points.porosity(p) = 1 - (1 - v.points.porosity(p)) / ratio;
+  if (material.phase != PhaseModel::Unsaturated) return;
+  if (v.hold_liquid_pressure) {  // drained, as updateLiquidPressure: the mass follows n V
+    v.points.mass_liquid(p) = v.points.porosity(p) * v.points.saturation(p) *
+                              v.points.density_liquid(p) * v.points.volume(p);
+    return;
+  }
+  // the same liquid mass in the smaller pore volume: p_L from the content again (4.12)
+  const Real content = v.points.mass_liquid(p) / (v.points.porosity(p) * v.points.volume(p));
+  const Real next = pressureOfLiquidContent(material, content, v.points.pressure_liquid(p));
+  v.points.pressure_liquid(p) = next;
+  v.points.density_liquid(p) = liquidDensity(material.liquid, next);
+}
+
 /// Equivalent deviatoric strain sqrt(2/3 e:e) of a plane-strain strain (tensor shear), of one
 /// point (Real) or kLanes points (Lanes).
 template <class T>
@@ -131,6 +211,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
     strain[c] = v.points.strain(p, c) + dstrain[c];
   }
   rotateStressBySpin(v.rates.spin_increment_p(p), stress);
+  const Real mean_before = (stress[XX] + stress[YY] + stress[ZZ]) / 3;
   Real plastic_strain = v.points.plastic_strain(p);
   int plastic_state = v.points.plastic_state(p);
   updateEffectiveStress(material.solid, material.solid_constants, suction, dstrain, stress,
@@ -142,6 +223,10 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
   v.points.plastic_strain(p) = plastic_strain;
   v.points.plastic_state(p) = plastic_state;
   v.points.deviatoric_strain(p) = equivalentDeviatoricStrain(strain);
+  if (isSeparating(plastic_state))
+    separateFromNeighbours(v, p, material, plastic_state,
+                           separationOpening(material.solid_constants, dstrain, mean_before,
+                                             (stress[XX] + stress[YY] + stress[ZZ]) / 3));
 }
 
 /// Step 6, state variables: S_L and k from the SWRC/HCC at the new pressure (unsaturated) or
@@ -223,7 +308,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v
   }
 }
 
-/// Runs, for every located point and in this order: updatePorosityAndVolume,
+/// Runs, for every located point and in this order: closeSeparation, updatePorosityAndVolume,
 /// updateLiquidPressure, updateEffectiveStress, updateLiquidState, updatePointPosition, in
 /// one pass; returns the liquid mass and the number of points whose new state is invalid
 /// (pointStateIsValid); the kinetic energies are left 0 (the G2P sums them).

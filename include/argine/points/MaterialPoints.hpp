@@ -49,6 +49,10 @@ struct MaterialPoints {
   View<Real*> mass_solid;      ///< M_S = (1-n) rho_S V, constant (kg)
   View<Real*> mass_liquid;     ///< M_L = n S_L rho_L V (kg)
   View<Real*> porosity;        ///< n (-)
+  /// Volumetric strain of the point's openings from its neighbours, not yet closed again
+  /// (>= 0; PointUpdates.hpp: separateFromNeighbours, closeSeparation): the gap a tensile
+  /// return left, which compressive strain closes before it compresses the point.
+  View<Real*> separation;
 
   // Liquid state
   View<Real*> pressure_liquid;  ///< p_L (Pa, compression positive)
@@ -61,7 +65,7 @@ struct MaterialPoints {
   View<Real* [kStressComponents]> strain;            ///< total small-strain accumulation (-)
   View<Real*> deviatoric_strain;                     ///< equivalent deviatoric strain (-)
   View<Real*> plastic_strain;                        ///< equivalent plastic strain (-)
-  View<int*> plastic_state;                          ///< 0 elastic, 1 plastic, 2 apex
+  View<int*> plastic_state;  ///< 0 elastic, 1 plastic, 2 apex, 3 tension cut-off
 
   /// Allocate all fields for n points, zero-initialised.
   void allocate(int n);

@@ -18,7 +18,8 @@ namespace argine {
   FIELD(material) FIELD(displacement) FIELD(velocity_solid) FIELD(velocity_liquid)       \
   FIELD(affine_velocity_solid) FIELD(affine_velocity_liquid)                              \
   FIELD(volume) FIELD(initial_volume) FIELD(mass_solid) FIELD(mass_liquid)               \
-  FIELD(porosity) FIELD(pressure_liquid) FIELD(density_liquid) FIELD(saturation)         \
+  FIELD(porosity) FIELD(separation) FIELD(pressure_liquid) FIELD(density_liquid)        \
+  FIELD(saturation)                                                                       \
   FIELD(conductivity) FIELD(stress_effective) FIELD(strain) FIELD(deviatoric_strain)     \
   FIELD(plastic_strain) FIELD(plastic_state)
 // clang-format on

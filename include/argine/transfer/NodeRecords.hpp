@@ -59,6 +59,8 @@ enum NodeStrainSlot : int {
   kReadStrainVelocitySolid = 0,                                 ///< x, y: v_S of t^{k+1}
   kReadStrainVelocityLiquid = kReadStrainVelocitySolid + kDim,  ///< x, y: v_L of t^{k+1}
   kReadStrainLiquidContent = kReadStrainVelocityLiquid + kDim,  ///< rho_L n S_L (4.16)
+  kReadStrainLiquidVolume,  ///< sum N V over liquid-carrying points: who shares the node
+  kReadStrainConditioned,   ///< 1 where a hydraulic condition acts on the node, else 0
   kReadStrainCount
 };
 
@@ -86,7 +88,10 @@ void addMomentumSumsToGrid(const ActiveNodes& active, NodeRecords& records, Grid
 /// values_i = a_S, a_L, v_S, v_L of `grid` at the active nodes (NodeVelocityUpdateSlot).
 void readVelocityUpdateValues(const ActiveNodes& active, const GridFields& grid,
                               NodeRecords& records);
-/// values_i = v_S, v_L, rho_L n S_L of `grid` at the active nodes (NodeStrainSlot).
-void readStrainValues(const ActiveNodes& active, const GridFields& grid, NodeRecords& records);
+/// values_i = v_S, v_L, rho_L n S_L, sum N V of `grid` and the flag of `conditioned_i` (1
+/// where a hydraulic condition acts; none when empty) at the active nodes (NodeStrainSlot).
+void readStrainValues(const ActiveNodes& active, const GridFields& grid,
+                      Kokkos::View<const unsigned char*, MemSpace> conditioned_i,
+                      NodeRecords& records);
 
 }  // namespace argine

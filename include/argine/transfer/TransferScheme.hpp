@@ -19,6 +19,16 @@ enum class TransferScheme {
   /// linear (Tri3, Quad4) shape functions C = sum v~_i (grad N_i)^T is exactly Jiang's
   /// B_p D_p^-1, since there D_p grad N_i = N_i (x_i - x_p).
   Apic,
+  /// Taylor PIC in the MUSL step: v_p = sum N v~_i as APIC, the remap without an affine part,
+  /// and C_p = the point's velocity gradient of the remapped field (step 4's grad v, per
+  /// phase), carried by the next step's momenta. Linear momentum is kept exactly, angular
+  /// momentum to the smoothing of the remap; unlike APIC, C_p sees a node's velocity only
+  /// through the remap, which weights it by N, so a node that a point barely reaches (N ->
+  /// 0 while grad N stays 1/h on linear shapes and at the grid's folded edges) cannot feed
+  /// its spurious acceleration back into the point (doc/theory.md Sec. 3.11). After
+  /// Nakamura et al. 2023 (Comput. Methods Appl. Mech. Engrg. 404), whose C_p is the grid
+  /// velocity gradient at the point.
+  Tpic,
 };
 
 /// Shares of a PIC update in the FLIP point velocity update, per phase, in [0, 1] and per

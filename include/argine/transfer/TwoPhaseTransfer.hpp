@@ -83,10 +83,21 @@ KineticTotals updatePointVelocitiesAndMapMomenta(
 /// dt div v_L and the liquid flux divergence dt div(c w), c = rho_L n S_L, w = v_L - v_S, at
 /// the liquid-carrying points (4.11-4.12 with the advective-gradient term 4.15-4.16; c from
 /// the nodal liquid content), and
-/// the displacement increment dt sum N v_S (7.13). `rates` is reallocated if needed.
+/// the displacement increment dt sum N v_S (7.13). A liquid-carrying point alone (every node
+/// it touches carries only its own liquid volume, sum N V = its N V, and none is under a
+/// hydraulic condition, `conditioned_i`) exchanges no liquid: there is no other point to take
+/// or give it, and the grid's relative velocity at its nodes is its own pressure pushing
+/// liquid to and fro between itself and empty space (measured: a saturated point resting on a
+/// floor gained and lost 1e-4 of its liquid as it vibrated, an unsaturated one drew water
+/// out of the air). Its relative flux is none (no content flux, div v_L = div v_S), so its
+/// liquid mass stays and its p_L is what its own volume change gives. `rates` is reallocated
+/// if needed. With TPIC (`scheme`) the velocity gradients of both phases become the points'
+/// affine matrices C_p (TransferScheme.hpp).
 void interpolateVelocityGradients(const MaterialPoints& points, const PointShapes& shapes,
                                   const LiquidCarrying& liquid_m, const ActiveNodes& active,
                                   const GridFields& grid, NodeRecords& records, Real dt,
-                                  PointRates& rates);
+                                  PointRates& rates,
+                                  Kokkos::View<const unsigned char*, MemSpace> conditioned_i = {},
+                                  TransferScheme scheme = TransferScheme::Flip);
 
 }  // namespace argine
