@@ -78,7 +78,14 @@ def main():
     rows = read_rows(sys.argv[2:])
     if not rows:
         sys.exit("collapse_check: no rows")
-    results = [checks[sys.argv[1]](row) for row in rows]
+    results = []
+    for row in rows:
+        if row.get("status", "ok") != "ok":  # the run itself failed: nothing to measure
+            print(f"a = {row['a']} ({row['shape']} {row['transfer']}, L0/{row['cells']}): "
+                  f"{row['status']}: FAIL")
+            results.append(False)
+        else:
+            results.append(checks[sys.argv[1]](row))
     print(f"collapse_check {sys.argv[1]}: {sum(results)} of {len(results)} within the bound")
     return 0 if all(results) else 1
 

@@ -14,8 +14,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 MESH_COLOURS = {10: "#9ecae1", 20: "#3182bd", 40: "#08306b"}
 SCHEME_STYLE = {("linear", "FLIP"): ("tab:orange", "v"), ("linear", "APIC"): ("tab:red", "^"),
+                ("linear", "TPIC"): ("tab:pink", "P"),
                 ("GIMP", "FLIP"): ("tab:olive", "<"), ("GIMP", "APIC"): ("tab:green", ">"),
-                ("B-spline", "FLIP"): ("tab:purple", "s"), ("B-spline", "APIC"): ("tab:blue", "o")}
+                ("GIMP", "TPIC"): ("tab:cyan", "X"),
+                ("B-spline", "FLIP"): ("tab:purple", "s"), ("B-spline", "APIC"): ("tab:blue", "o"),
+                ("B-spline", "TPIC"): ("tab:brown", "D")}
 
 
 def read_profile(folder, tag, suffix="_profile.csv"):
@@ -171,20 +174,30 @@ def accuracy_cost_figure(cost, path):
                             "a = 2 against the L0/40 run of the same pair: max over "
                             "L99, front, H_inf")):
         for scheme, (colour, marker) in SCHEME_STYLE.items():
-            rows = [r for r in cost if (r["shape"], r["transfer"]) == scheme
-                    and np.isfinite(r[key])]
+            every = [r for r in cost if (r["shape"], r["transfer"]) == scheme]
+            rows = [r for r in every if np.isfinite(r[key])]
+            failed = [f"L0/{r['cells']}" for r in every if r["status"] != "ok"]
+            label = f"{scheme[0]} / {scheme[1]}"
+            if failed:
+                label += f" (unstable on {', '.join(failed)})"
+            if any(r["status"] == "ok" and r["v7_checks"] == "fail" for r in every):
+                label += " (open: not at rest, KE points != grid)"
             if not rows:
+                if every:
+                    ax.plot([], [], marker, color=colour, label=label)
                 continue
             ax.loglog([r["cpu_seconds"] for r in rows], [100 * r[key] for r in rows], "-",
-                      marker=marker, color=colour, label=f"{scheme[0]} / {scheme[1]}")
+                      color=colour, label=label)
             for r in rows:
+                ax.plot(r["cpu_seconds"], 100 * r[key], marker, color=colour,
+                        mfc=colour if r["v7_checks"] == "pass" else "none")
                 ax.annotate(f"L0/{r['cells']}", (r["cpu_seconds"], 100 * r[key]), fontsize=6,
                             xytext=(3, 2), textcoords="offset points")
         ax.set_xlabel("CPU time of the run (s)")
         ax.set_ylabel("error (%)")
         ax.set_title(title, fontsize=8)
         ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=6)
     fig.savefig(path, dpi=110)
     plt.close(fig)
 

@@ -2,7 +2,7 @@
 """Runs one V7 granular column collapse with `argine run` and measures it.
 
   collapse_run.py --deck collapse_a2.yaml [--cells 20] [--shape linear|GIMP|B-spline]
-                  [--transfer FLIP|APIC] [--work DIR] [--csv FILE] [--profiles DIR]
+                  [--transfer FLIP|APIC|TPIC] [--work DIR] [--csv FILE] [--profiles DIR]
                   [--set 'KEY=VALUE' ...] [--tag-suffix S] [--argine build/argine] [--keep]
                   [--skip-existing] [--new-csv]
 
@@ -34,7 +34,8 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 COLUMNS = ["deck", "a", "cells", "h", "shape", "transfer", "points", "steps", "wall_seconds",
            "cpu_seconds", "runout_L95", "runout_L99", "runout_L100", "runout_front",
            "runout_front_fixed", "height", "volume_ratio", "porosity_min", "porosity_max",
-           "t_stop", "t_end", "energy_scale", "ke_peak", "ke_points", "ke_grid", "lost_points"]
+           "t_stop", "t_end", "energy_scale", "ke_peak", "ke_points", "ke_grid", "lost_points",
+           "status"]
 
 
 def deck_value(text, key):
@@ -91,10 +92,16 @@ def run(argine, deck, directory):
     with open(os.path.join(directory, "argine.log"), "w") as log:
         log.write(done.stdout + done.stderr)
     if done.returncode != 0:
-        sys.exit(f"collapse_run: argine run {deck} failed ({done.returncode}):\n"
-                 + done.stderr[-2000:])
+        print(f"collapse_run: argine run {deck} failed ({done.returncode}):\n"
+              + done.stderr[-2000:], file=sys.stderr)
+        stopped = re.search(r"run stopped: (\w+) at t = ([0-9.eE+-]+) s \(step (\d+)",
+                            done.stderr)
+        if stopped:
+            return wall, cpu, int(stopped.group(3)), (f"failed: {stopped.group(1)} at "
+                                                     f"t = {float(stopped.group(2)):.4g} s")
+        return wall, cpu, -1, f"failed: exit code {done.returncode}"
     steps = re.search(r"argine: (\d+) steps, (\d+) points", done.stdout)
-    return wall, cpu, int(steps.group(1)) if steps else -1
+    return wall, cpu, int(steps.group(1)) if steps else -1, "ok"
 
 
 def write_row(path, row):
@@ -112,7 +119,7 @@ def main():
     parser.add_argument("--deck", required=True)
     parser.add_argument("--cells", type=int, help="cells per column length L0")
     parser.add_argument("--shape", choices=["linear", "GIMP", "B-spline"])
-    parser.add_argument("--transfer", choices=["FLIP", "APIC"])
+    parser.add_argument("--transfer", choices=["FLIP", "APIC", "TPIC"])
     parser.add_argument("--work", default=os.path.join(ROOT, "build", "verification",
                                                        "granular_collapse", "runs"))
     parser.add_argument("--csv")
@@ -148,11 +155,22 @@ def main():
     deck = os.path.join(directory, tag + ".yaml")
     with open(deck, "w") as handle:
         handle.write(text)
-    wall, cpu, steps = run(args.argine, deck, directory)
+    wall, cpu, steps, status = run(args.argine, deck, directory)
+    if status != "ok":
+        # The failure is a result of the study (an unstable pair): one row with the run's
+        # identity, cost and status, the measures empty; the exit code says it failed.
+        row = {k: float("nan") for k in COLUMNS}
+        row.update(deck=label, a=column["H0"] / column["L0"], cells=cells, h=column["h"],
+                   shape=shape, transfer=transfer, steps=steps, wall_seconds=round(wall, 2),
+                   cpu_seconds=round(cpu, 2), status=status)
+        if args.csv:
+            write_row(args.csv, row)
+        print(f"collapse_run: {tag}: {status}")
+        return 1
     result, profile = measure(directory, name, column)
     row = dict(result, deck=label, a=column["H0"] / column["L0"],
                cells=cells, h=column["h"], shape=shape, transfer=transfer, steps=steps,
-               wall_seconds=round(wall, 2), cpu_seconds=round(cpu, 2))
+               wall_seconds=round(wall, 2), cpu_seconds=round(cpu, 2), status="ok")
     if args.csv:
         write_row(args.csv, row)
     if args.profiles:
