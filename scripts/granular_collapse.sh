@@ -10,6 +10,9 @@
 #                                        (runs.csv, convergence.csv, accuracy_cost.csv,
 #                                        profiles/) and doc/figures/granular_collapse_*.png
 #   scripts/granular_collapse.sh pairs   the a = 2 pairs only (into results/, as the study)
+#   scripts/granular_collapse.sh sensitivity  floor friction, E, points per cell, time step
+#                                        and L0/80 at a = 0.5 (rows in results/runs.csv;
+#                                        reported, not used)
 #   scripts/granular_collapse.sh quick   the decks as written (L0/20) only, into
 #                                        build/verification/granular_collapse/quick/
 # One run at a time (the machine's cores are shared). Runs whose row is in runs.csv already
@@ -60,6 +63,18 @@ case $mode in
     for a in $ratios; do run --deck "$case_dir/collapse_a$a.yaml"; done ;;
   pairs)
     pairs ;;
+  sensitivity)  # reported, not used: floor friction and E (README "Sensitivity"), and the
+                # numerical checks of the run-out above the band (points per cell, time step,
+                # a finer mesh at a = 0.5)
+    d4=$case_dir/collapse_a4.yaml
+    run --deck "$d4" --set "Friction Coefficient (-)=0.3640" --tag-suffix _mu0.364
+    run --deck "$d4" --set "Friction Coefficient (-)=1.0" --tag-suffix _mu1.0
+    run --deck "$d4" --set "Young's Modulus (Pa)=4.0e6" --tag-suffix _E4e6
+    for d in "$d4" "$case_dir/collapse_a6.yaml"; do
+      run --deck "$d" --set "Points Per Element=9" --tag-suffix _ppc9
+      run --deck "$d" --set "Safety Factor=0.25" --tag-suffix _sf0.25
+    done
+    run --deck "$case_dir/collapse_a0.5.yaml" --cells 80 ;;
   *)
     pairs
     for a in $ratios; do

@@ -13,6 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MESH_COLOURS = {10: "#9ecae1", 20: "#3182bd", 40: "#08306b"}
+RATIO_COLOURS = {0.5: "#1b9e77", 1.0: "#d95f02", 2.0: "black", 4.0: "#e7298a", 6.0: "#66a61e"}
 SCHEME_STYLE = {("linear", "FLIP"): ("tab:orange", "v"), ("linear", "APIC"): ("tab:red", "^"),
                 ("linear", "TPIC"): ("tab:pink", "P"),
                 ("GIMP", "FLIP"): ("tab:olive", "<"), ("GIMP", "APIC"): ("tab:green", ">"),
@@ -146,6 +147,8 @@ def convergence_figure(groups, scheme, path):
             cells = [10, 20, 40]
             values = [meshes[c][q] for c in cells]
             colour, marker = SCHEME_STYLE[(shape, transfer)]
+            if (shape, transfer) == scheme:  # one colour per aspect ratio
+                colour = RATIO_COLOURS.get(round(a, 3), colour)
             style = "-" if (shape, transfer) == scheme else "--"
             ax.plot([1 / c for c in cells], values, style, marker=marker, color=colour,
                     alpha=1 if (shape, transfer) == scheme else 0.6,

@@ -60,14 +60,15 @@ def column_of(text):
 
 
 def replace(text, key, value):
-    return re.sub(r"^(\s*" + re.escape(key) + r":\s*)[^\s#]+", lambda m: m.group(1) + value,
-                  text, count=1, flags=re.M)
+    """The first value of `key`, on a line of its own or in a flow map ({..., key: value})."""
+    return re.sub(r"((?:^\s*|[{,]\s*)" + re.escape(key) + r":\s*)[^\s,}#]+",
+                  lambda m: m.group(1) + value, text, count=1, flags=re.M)
 
 
 def variant(text, cells, shape, transfer, settings=()):
     for setting in settings:
         key, value = setting.split("=", 1)
-        if not re.search(r"^\s*" + re.escape(key) + r":", text, re.M):
+        if not re.search(r"(?:^\s*|[{,]\s*)" + re.escape(key) + r":", text, re.M):
             sys.exit(f"collapse_run: --set {setting}: no '{key}' line in the deck")
         text = replace(text, key, value)
     column = column_of(text)
