@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "GridRelocation.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -262,7 +263,11 @@ RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator&
                                            PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
-  if (shapes.onGrid()) {  // the element's linear shapes stay (element-based parts), plus:
+  if (shapes.onGrid()) {
+    // By index arithmetic where the elements are the grid's cells (the transfers read only
+    // the tensor shapes), else by the element route: the element's linear shapes, plus:
+    if (maps.cell_element.extent(0) > 0)
+      return relocateOnGrid(mesh, locator.tolerance(), maps.cell_element, points, shapes);
     RelocationCounts counts = withShape(mesh.type, [&](auto shape) {
       return relocate<decltype(shape)>(mesh, locator, AffineElementMaps{}, points, shapes);
     });

@@ -102,27 +102,6 @@ struct AffineShapesAt {
   }
 };
 
-/// What a transfer kernel reads of one point's shapes on the grid families (GIMP, B-spline):
-/// its 3 x 3 stencil, expanded from the point's TensorShape where read (a node's N is two
-/// multiplications; the 120-byte record is read once).
-struct GridShapesAt {
-  using Value = Real;
-  static constexpr int kCount = 1;
-  TensorShape shape;
-  int row;
-
-  /// Point p, located.
-  KOKKOS_INLINE_FUNCTION GridShapesAt(const PointShapes& shapes, int p)
-      : shape(shapes.grid_p(p)), row(shapes.grid_row) {}
-  KOKKOS_INLINE_FUNCTION int node(int a, int /*lane*/ = 0) const { return gridNode(shape, row, a); }
-  KOKKOS_INLINE_FUNCTION Real value(int a) const { return gridValue(shape, a); }
-  KOKKOS_INLINE_FUNCTION Real gradient(int a, int d) const { return gridGradient(shape, a, d); }
-  template <class Values>
-  KOKKOS_INLINE_FUNCTION Real nodal(const Values& values_i, int a, int slot) const {
-    return values_i(node(a), slot);
-  }
-};
-
 /// Point l's part of v: v itself for one point (a value or a bool), lane l for Lanes.
 template <class V>
 KOKKOS_INLINE_FUNCTION auto lane(const V& v, int /*l*/)

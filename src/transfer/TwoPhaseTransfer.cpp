@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "GridPointTransfers.hpp"
 #include "PointShapesAt.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
@@ -48,7 +49,7 @@ constexpr bool affineMomenta(TransferScheme scheme) {
   return scheme != TransferScheme::Flip;
 }
 
-/// Whether Family is the grid families' (one point at a time, GridShapesAt).
+/// Whether Family is the grid families' (one point at a time, GridPointTransfers.hpp).
 template <class Family>
 inline constexpr bool kOnGrid = std::is_same_v<Family, GridShapeFamily>;
 
@@ -118,6 +119,26 @@ struct PackedSums {
         }
       }
   }
+
+  /// The same for one point's blocks [first_block, first_block + kCount) of node i, computed
+  /// as blocks (GridPointTransfers.hpp).
+  template <int kCount>
+  KOKKOS_INLINE_FUNCTION void addBlocks(int i, const Lanes (&blocks)[kCount], int first_block,
+                                        bool /*wet*/) const {
+    Real* const row = &rows(i, 0);  // once a node: the stores may alias the View's fields
+    for (int b = 0; b < kCount; ++b) {
+      const int slot = (first_block + b) * kLanes;
+      if constexpr (std::is_same_v<ExecSpace, Kokkos::Serial>) {
+        Real* sums = row + slot;  // LayoutRight rows of kNodeSumRow
+        Lanes value;
+        std::memcpy(&value, sums, sizeof value);
+        value = value + blocks[b];
+        std::memcpy(sums, &value, sizeof value);
+      } else {
+        for (int k = 0; k < kLanes; ++k) access(i, slot + k) += blocks[b][k];
+      }
+    }
+  }
 };
 
 /// ... or the GridFields sums `hi`, compensated with their low parts in `lo` (reproducible
@@ -159,6 +180,16 @@ struct CompensatedSums {
         for (int slot = first_block * kLanes; slot < end_block * kLanes; ++slot)
           if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot)))
             add(at.node(a, l), slot, lane(row[a][slot], l));
+  }
+
+  template <int kCount>
+  KOKKOS_INLINE_FUNCTION void addBlocks(int i, const Lanes (&blocks)[kCount], int first_block,
+                                        bool wet) const {
+    for (int b = 0; b < kCount; ++b)
+      for (int k = 0; k < kLanes; ++k) {
+        const int slot = (first_block + b) * kLanes + k;
+        if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot))) add(i, slot, blocks[b][k]);
+      }
   }
 };
 
@@ -341,14 +372,14 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   constexpr int kNodes = Family::kNodes;
   constexpr bool kAffine = affineMomenta(kScheme);
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
-  // grid families: point by point.
+  // grid families: point by point, by blocks of slots (GridPointTransfers.hpp).
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
     if constexpr (kOnGrid<Family>) {
       for (int p = first; p < first + kLanes && p < count; ++p)
         if (element_p(p) >= 0)
-          mapPointToGrid<kNodes, kAffine>(GridShapesAt(shapes, p), liquid_m(v.material_p(p)) != 0,
-                                          gravity, v, sums, p);
+          mapGridPointToGrid<kAffine>(shapes.grid_p(p), shapes.grid_row,
+                                      liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
     } else {
       bool wet = false, one_element = false;
       if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
@@ -543,15 +574,15 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const int count = points.count;
   constexpr int kNodes = Family::kNodes;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
-  // grid families: point by point.
+  // grid families: point by point, by blocks of slots (GridPointTransfers.hpp).
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real& ks, Real& kl, int& bad) {
     const int first = chunk * kLanes;
     if constexpr (kOnGrid<Family>) {
       for (int p = first; p < first + kLanes && p < count; ++p)
         if (element_p(p) >= 0)
-          updatePointVelocityAt<kNodes, kScheme>(GridShapesAt(shapes, p),
-                                                 liquid_m(material_p(p)) != 0, dt, pic_solid,
-                                                 pic_liquid, values_i, v, sums, p, ks, kl, bad);
+          updateGridPointVelocity<kScheme>(shapes.grid_p(p), shapes.grid_row,
+                                           liquid_m(material_p(p)) != 0, dt, pic_solid, pic_liquid,
+                                           values_i, v, sums, p, ks, kl, bad);
     } else {
       bool wet = false, one_element = false;
       if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
@@ -709,9 +740,9 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
             if (element_p(p) < 0)
               clearStrainIncrements(r, p);
             else
-              strainIncrementsAt<kNodes, kCentre, kStoreGradients>(GridShapesAt(shapes, p),
-                                                                   liquid_m(material_p(p)) != 0, dt,
-                                                                   values_i, strain_v, r, p);
+              gridStrainIncrements<kStoreGradients>(shapes.grid_p(p), shapes.grid_row,
+                                                    liquid_m(material_p(p)) != 0, dt, values_i,
+                                                    strain_v, r, p);
           }
         } else {
           bool wet = false, one_element = false;
