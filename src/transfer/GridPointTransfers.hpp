@@ -28,23 +28,42 @@
 
 namespace argine {
 
+/// The kLanes values from `first` (four consecutive slots of a packed row).
+KOKKOS_FORCEINLINE_FUNCTION Lanes loadBlock(const Real* first) {
+  Lanes out;
+  std::memcpy(&out, first, sizeof out);
+  return out;
+}
+
+/// Writes v to the kLanes values from `first`.
+KOKKOS_FORCEINLINE_FUNCTION void storeBlock(Real* first, Lanes v) {
+  std::memcpy(first, &v, sizeof v);
+}
+
 /// A point's 3 x 3 stencil expanded for a kernel: node a = ax + 3 ay, its N and dN/dx (the
 /// bits of gridValue and gridGradient), and the x of the stencil's columns and the y of its
 /// rows (APIC's offsets x_a - x_p: on the grid a node's x depends on its column only).
 struct GridStencil {
   int node[kGridStencilNodes];
-  Real N[kGridStencilNodes], dx[kGridStencilNodes], dy[kGridStencilNodes];
+  /// One more than the nodes: a row of the stencil is written as one Lanes (constructor).
+  Real N[kGridStencilNodes + 1], dx[kGridStencilNodes + 1], dy[kGridStencilNodes + 1];
 
-  /// The stencil of a located point.
+  /// The stencil of a located point, a row of three nodes at a time: the x functions in lanes
+  /// 0-2 (lane 3 the first y value, overwritten by the next row or left in the padding) times
+  /// the row's y function, three vector products a row where the compiler's own vectorising of
+  /// the 27 scalar products costs more in shuffles than the products.
   KOKKOS_INLINE_FUNCTION GridStencil(const TensorShape& t, int row) {
-    for (int ay = 0; ay < kGridStencil; ++ay)
-      for (int ax = 0; ax < kGridStencil; ++ax) {
-        const int a = ax + kGridStencil * ay;
-        node[a] = t.line[0][ax] + t.line[1][ay] * row;
-        N[a] = t.value[0][ax] * t.value[1][ay];
-        dx[a] = t.gradient[0][ax] * t.value[1][ay];
-        dy[a] = t.value[0][ax] * t.gradient[1][ay];
-      }
+    static_assert(sizeof(t.value[0]) == kGridStencil * sizeof(Real) && kGridStencil + 1 == kLanes,
+                  "a row of x values and the first y value are one Lanes");
+    const Lanes wx = loadBlock(&t.value[0][0]), gx = loadBlock(&t.gradient[0][0]);
+    for (int ay = 0; ay < kGridStencil; ++ay) {
+      const Real wy = t.value[1][ay], gy = t.gradient[1][ay];
+      storeBlock(&N[kGridStencil * ay], wx * wy);
+      storeBlock(&dx[kGridStencil * ay], gx * wy);
+      storeBlock(&dy[kGridStencil * ay], wx * gy);
+      for (int ax = 0; ax < kGridStencil; ++ax)
+        node[ax + kGridStencil * ay] = t.line[0][ax] + t.line[1][ay] * row;
+    }
   }
 };
 
@@ -63,13 +82,6 @@ struct GridOffsets {
     }
   }
 };
-
-/// The kLanes values from `first` (four consecutive slots of a packed row).
-KOKKOS_FORCEINLINE_FUNCTION Lanes loadBlock(const Real* first) {
-  Lanes out;
-  std::memcpy(&out, first, sizeof out);
-  return out;
-}
 
 /// x in every lane, one broadcast: splat<Lanes> adds x to +0 for the lanes' bits of the scalar
 /// formulas (-0 becomes +0), an instruction more. Here the value only multiplies into terms
@@ -140,17 +152,22 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
     yp = v.position_p(p, 1);
   }
   const GridOffsets offset = kAffine ? GridOffsets(t, row, v.coordinates_i, xp, yp) : GridOffsets{};
-  for (int ay = 0; ay < kGridStencil; ++ay)
+  // v + C (x_a - x_p) as affineVelocity sums it, (v + C_.0 dx) + C_.1 dy: the columns' part
+  Lanes column_velocity[kGridStencil];
+  for (int ax = 0; ax < kGridStencil; ++ax)
+    column_velocity[ax] = kAffine ? velocity + affine_x * offset.x[ax] : velocity;
+  for (int ay = 0; ay < kGridStencil; ++ay) {
+    const Lanes row_part = affine_y * offset.y[ay];
     for (int ax = 0; ax < kGridStencil; ++ax) {
       const int a = ax + kGridStencil * ay;
       const Lanes N = broadcast(s.N[a]), dx = broadcast(s.dx[a]), dy = broadcast(s.dy[a]);
-      Lanes va = velocity;  // v + C (x_a - x_p), component by component as affineVelocity
-      if constexpr (kAffine) va = (va + affine_x * offset.x[ax]) + affine_y * offset.y[ay];
+      const Lanes va = kAffine ? column_velocity[ax] + row_part : velocity;
       const Lanes blocks[4] = {N * masses, N * momentum_mass * va,
                                (dx * force_x + dy * force_y) * force_scale + N * force_n,
                                dy * liquid_y + N * liquid_n};
       sums.addBlocks(s.node[a], blocks, 0, wet);
     }
+  }
 }
 
 /// The velocity update of point p, located, `wet` or dry (updatePointVelocityAt's formulas
@@ -244,13 +261,18 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
     const Lanes affine_x = wet ? gradient_x : lanesOf(gradient_x[0], gradient_x[1], 0, 0);
     const Lanes affine_y = wet ? gradient_y : lanesOf(gradient_y[0], gradient_y[1], 0, 0);
     const GridOffsets offset(t, row, v.coordinates_i, v.position_p(p, 0), v.position_p(p, 1));
-    for (int ay = 0; ay < kGridStencil; ++ay)
+    Lanes column_velocity[kGridStencil];  // as in mapGridPointToGrid
+    for (int ax = 0; ax < kGridStencil; ++ax)
+      column_velocity[ax] = velocity + affine_x * offset.x[ax];
+    for (int ay = 0; ay < kGridStencil; ++ay) {
+      const Lanes row_part = affine_y * offset.y[ay];
       for (int ax = 0; ax < kGridStencil; ++ax) {
         const int a = ax + kGridStencil * ay;
-        const Lanes va = (velocity + affine_x * offset.x[ax]) + affine_y * offset.y[ay];
-        const Lanes block[1] = {broadcast(s.N[a]) * momentum_mass * va};
+        const Lanes block[1] = {broadcast(s.N[a]) * momentum_mass *
+                                (column_velocity[ax] + row_part)};
         sums.addBlocks(s.node[a], block, 1, wet);
       }
+    }
   } else {
     for (int a = 0; a < kGridStencilNodes; ++a) {
       const Lanes block[1] = {broadcast(s.N[a]) * momentum_mass * velocity};
@@ -277,6 +299,9 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
   Lanes relative = {}, relative_x = {}, relative_y = {}, divergences = {};
   const Lanes zero = {};
   const auto gather = [&](auto with_liquid) {
+  // One node an iteration: unrolled, the compiler computes all nine nodes' products ahead
+  // of the in-order sums and spills them (27 instructions a point more).
+#pragma GCC unroll 1
     for (int a = 0; a < kGridStencilNodes; ++a) {
       const Real* values = &values_i(s.node[a], 0);
       const Lanes N = broadcast(s.N[a]), dx = broadcast(s.dx[a]), dy = broadcast(s.dy[a]);
