@@ -27,8 +27,8 @@ RelocationCounts relocateOnGrid(const Mesh& mesh, Real tolerance,
       "relocate_on_grid", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, int& outside, int& moved, int& changed) {
         const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
-        Real xi[kDim];  // cells from the grid's origin
-        int cell[kDim];
+        Real xi[kDim];            // cells from the grid's origin
+        int cell[kDim] = {0, 0};  // (set when inside)
         bool inside = true;
         for (int d = 0; d < kDim; ++d) {
           xi[d] = (x[d] - grid.origin[d]) / grid.spacing[d];
