@@ -9,10 +9,8 @@ namespace argine {
 RelocationCounts relocateOnGrid(const Mesh& mesh, Real tolerance,
                                 Kokkos::View<const int*, MemSpace> cell_element,
                                 MaterialPoints& points, PointShapes& shapes) {
-  if (static_cast<int>(shapes.grid_p.extent(0)) != points.count)
-    shapes.grid_p = decltype(shapes.grid_p)("grid_p", points.count);
+  shapes.prepareGrid(points.count, mesh.structured);
   const StructuredGrid grid = mesh.structured;
-  shapes.grid_row = grid.cells[0] + 1;
   const ShapeFamily family = shapes.family;
   const auto grid_p = shapes.grid_p;
   const auto element_p = points.element;

@@ -17,6 +17,11 @@ void PointShapes::allocate(int n) {
   grid_p = View<TensorShape*>("grid_p", onGrid() ? n : 0);
 }
 
+void PointShapes::prepareGrid(int n, const StructuredGrid& grid) {
+  if (static_cast<int>(grid_p.extent(0)) != n) grid_p = View<TensorShape*>("grid_p", n);
+  grid_row = grid.cells[0] + 1;
+}
+
 Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
                                                     const MaterialPoints& points) {
   Kokkos::View<PointShape*, MemSpace> out("every_point_shape", points.count);
@@ -231,10 +236,8 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
 }  // namespace
 
 int evaluateGridShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {
-  if (static_cast<int>(shapes.grid_p.extent(0)) != points.count)
-    shapes.grid_p = decltype(shapes.grid_p)("grid_p", points.count);
+  shapes.prepareGrid(points.count, mesh.structured);
   const StructuredGrid grid = mesh.structured;
-  shapes.grid_row = grid.cells[0] + 1;
   const ShapeFamily family = shapes.family;
   const auto grid_p = shapes.grid_p;
   const auto element_p = points.element;

@@ -137,6 +137,9 @@ struct PointShapes {
 
   /// Allocate for n points.
   void allocate(int n);
+  /// grid_p sized for n points (kept when it is) and grid_row set for `grid`: what each
+  /// evaluation of the tensor shapes does first.
+  void prepareGrid(int n, const StructuredGrid& grid);
   /// Number of points allocated for.
   KOKKOS_INLINE_FUNCTION int count() const { return static_cast<int>(stored_p.extent(0)); }
 
