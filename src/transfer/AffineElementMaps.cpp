@@ -1,5 +1,7 @@
 #include "argine/transfer/AffineElementMaps.hpp"
 
+#include <cmath>
+
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
 
@@ -20,6 +22,37 @@ Real inverseJacobian(const Real X[][kDim], Real inverse[4]) {
   inverse[2] = -J[1][0] * inv;
   inverse[3] = J[0][0] * inv;
   return det;
+}
+
+/// AffineElementMaps::cell_element of `mesh` (host copies of its coordinates and
+/// connectivity): empty unless every element is a cell of mesh.structured, once, with its
+/// nodes in grid order and at the cell's corners.
+template <class Coordinates, class Connectivity>
+Kokkos::View<int*, MemSpace> cellElements(const Mesh& mesh, const Coordinates& coordinates,
+                                          const Connectivity& connectivity) {
+  const StructuredGrid& grid = mesh.structured;
+  if (mesh.type != ElementType::Quad4 || !grid.valid()) return {};
+  const int nx = grid.cells[0], ny = grid.cells[1], row = nx + 1;
+  Kokkos::View<int*, MemSpace> cells("cell_element", static_cast<std::size_t>(nx) * ny);
+  auto cell_h = Kokkos::create_mirror_view(cells);
+  Kokkos::deep_copy(cell_h, -1);
+  constexpr int kCornerX[4] = {0, 1, 1, 0}, kCornerY[4] = {0, 0, 1, 1};
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const int i = connectivity(e, 0) % row, j = connectivity(e, 0) / row;
+    if (i >= nx || j >= ny || cell_h(i + nx * j) >= 0) return {};
+    for (int k = 0; k < 4; ++k) {
+      const int corner[kDim] = {i + kCornerX[k], j + kCornerY[k]};
+      const int node = corner[0] + row * corner[1];
+      if (connectivity(e, k) != node) return {};
+      for (int d = 0; d < kDim; ++d)  // the generator's coordinates, up to rounding
+        if (std::fabs(coordinates(node, d) - (grid.origin[d] + corner[d] * grid.spacing[d])) >
+            1e-9 * grid.spacing[d])
+          return {};
+    }
+    cell_h(i + nx * j) = e;
+  }
+  Kokkos::deep_copy(cells, cell_h);
+  return cells;
 }
 
 }  // namespace
@@ -66,6 +99,7 @@ AffineElementMaps::AffineElementMaps(const Mesh& mesh)
   Kokkos::deep_copy(inverse_jacobian_e, inverse);
   Kokkos::deep_copy(origin_e, origin);
   Kokkos::deep_copy(affine_e, affine);
+  cell_element = cellElements(mesh, coordinates, connectivity);
 }
 
 }  // namespace argine

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "GridRelocation.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -14,6 +15,11 @@ void PointShapes::allocate(int n) {
   stored_p = View<PointShape*>("stored_p", n);
   computed_c = View<int*>("computed_c", (n + kLanes - 1) / kLanes);
   grid_p = View<TensorShape*>("grid_p", onGrid() ? n : 0);
+}
+
+void PointShapes::prepareGrid(int n, const StructuredGrid& grid) {
+  if (static_cast<int>(grid_p.extent(0)) != n) grid_p = View<TensorShape*>("grid_p", n);
+  grid_row = grid.cells[0] + 1;
 }
 
 Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
@@ -230,10 +236,8 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
 }  // namespace
 
 int evaluateGridShapes(const Mesh& mesh, const MaterialPoints& points, PointShapes& shapes) {
-  if (static_cast<int>(shapes.grid_p.extent(0)) != points.count)
-    shapes.grid_p = decltype(shapes.grid_p)("grid_p", points.count);
+  shapes.prepareGrid(points.count, mesh.structured);
   const StructuredGrid grid = mesh.structured;
-  shapes.grid_row = grid.cells[0] + 1;
   const ShapeFamily family = shapes.family;
   const auto grid_p = shapes.grid_p;
   const auto element_p = points.element;
@@ -262,7 +266,11 @@ RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator&
                                            PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
-  if (shapes.onGrid()) {  // the element's linear shapes stay (element-based parts), plus:
+  if (shapes.onGrid()) {
+    // By index arithmetic where the elements are the grid's cells (the transfers read only
+    // the tensor shapes), else by the element route: the element's linear shapes, plus:
+    if (maps.cell_element.extent(0) > 0)
+      return relocateOnGrid(mesh, locator.tolerance(), maps.cell_element, points, shapes);
     RelocationCounts counts = withShape(mesh.type, [&](auto shape) {
       return relocate<decltype(shape)>(mesh, locator, AffineElementMaps{}, points, shapes);
     });

@@ -102,40 +102,6 @@ struct AffineShapesAt {
   }
 };
 
-/// What a transfer kernel reads of one point's shapes on the grid families (GIMP, B-spline):
-/// its 3 x 3 stencil, expanded from the point's TensorShape where read (a node's N is two
-/// multiplications; the 120-byte record is read once).
-struct GridShapesAt {
-  using Value = Real;
-  static constexpr int kCount = 1;
-  TensorShape shape;
-  int row;
-
-  /// Point p, located.
-  KOKKOS_INLINE_FUNCTION GridShapesAt(const PointShapes& shapes, int p)
-      : shape(shapes.grid_p(p)), row(shapes.grid_row) {}
-  KOKKOS_INLINE_FUNCTION int node(int a, int /*lane*/ = 0) const { return gridNode(shape, row, a); }
-  KOKKOS_INLINE_FUNCTION Real value(int a) const { return gridValue(shape, a); }
-  KOKKOS_INLINE_FUNCTION Real gradient(int a, int d) const { return gridGradient(shape, a, d); }
-  template <class Values>
-  KOKKOS_INLINE_FUNCTION Real nodal(const Values& values_i, int a, int slot) const {
-    return values_i(node(a), slot);
-  }
-  /// The weights of the centre of the point's cell on the stencil (cellCentreWeights1D).
-  KOKKOS_INLINE_FUNCTION void centreWeights(Real w[kGridStencilNodes],
-                                            Real g[kGridStencilNodes][kDim]) const {
-    Real wx[kGridStencil], wy[kGridStencil], sx[kGridStencil], sy[kGridStencil];
-    cellCentreWeights1D(shape, 0, wx, sx);
-    cellCentreWeights1D(shape, 1, wy, sy);
-    for (int a = 0; a < kGridStencilNodes; ++a) {
-      const int ax = a % kGridStencil, ay = a / kGridStencil;
-      w[a] = wx[ax] * wy[ay];
-      g[a][0] = sx[ax] * wy[ay];
-      g[a][1] = wx[ax] * sy[ay];
-    }
-  }
-};
-
 /// Point l's part of v: v itself for one point (a value or a bool), lane l for Lanes.
 template <class V>
 KOKKOS_INLINE_FUNCTION auto lane(const V& v, int /*l*/)

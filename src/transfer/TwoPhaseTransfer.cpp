@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "GridPointTransfers.hpp"
 #include "PointShapesAt.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
@@ -48,7 +49,7 @@ constexpr bool affineMomenta(TransferScheme scheme) {
   return scheme != TransferScheme::Flip;
 }
 
-/// Whether Family is the grid families' (one point at a time, GridShapesAt).
+/// Whether Family is the grid families' (one point at a time, GridPointTransfers.hpp).
 template <class Family>
 inline constexpr bool kOnGrid = std::is_same_v<Family, GridShapeFamily>;
 
@@ -118,6 +119,26 @@ struct PackedSums {
         }
       }
   }
+
+  /// The same for one point's blocks [first_block, first_block + kCount) of node i, computed
+  /// as blocks (GridPointTransfers.hpp).
+  template <int kCount>
+  KOKKOS_INLINE_FUNCTION void addBlocks(int i, const Lanes (&blocks)[kCount], int first_block,
+                                        bool /*wet*/) const {
+    Real* const row = &rows(i, 0);  // once a node: the stores may alias the View's fields
+    for (int b = 0; b < kCount; ++b) {
+      const int slot = (first_block + b) * kLanes;
+      if constexpr (std::is_same_v<ExecSpace, Kokkos::Serial>) {
+        Real* sums = row + slot;  // LayoutRight rows of kNodeSumRow
+        Lanes value;
+        std::memcpy(&value, sums, sizeof value);
+        value = value + blocks[b];
+        std::memcpy(sums, &value, sizeof value);
+      } else {
+        for (int k = 0; k < kLanes; ++k) access(i, slot + k) += blocks[b][k];
+      }
+    }
+  }
 };
 
 /// ... or the GridFields sums `hi`, compensated with their low parts in `lo` (reproducible
@@ -159,6 +180,16 @@ struct CompensatedSums {
         for (int slot = first_block * kLanes; slot < end_block * kLanes; ++slot)
           if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot)))
             add(at.node(a, l), slot, lane(row[a][slot], l));
+  }
+
+  template <int kCount>
+  KOKKOS_INLINE_FUNCTION void addBlocks(int i, const Lanes (&blocks)[kCount], int first_block,
+                                        bool wet) const {
+    for (int b = 0; b < kCount; ++b)
+      for (int k = 0; k < kLanes; ++k) {
+        const int slot = (first_block + b) * kLanes + k;
+        if (slot < kSumSlotCount && (wet || isSolidSumSlot(slot))) add(i, slot, blocks[b][k]);
+      }
   }
 };
 
@@ -341,14 +372,14 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   constexpr int kNodes = Family::kNodes;
   constexpr bool kAffine = affineMomenta(kScheme);
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
-  // grid families: point by point.
+  // grid families: point by point, by blocks of slots (GridPointTransfers.hpp).
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
     const int first = chunk * kLanes;
     if constexpr (kOnGrid<Family>) {
       for (int p = first; p < first + kLanes && p < count; ++p)
         if (element_p(p) >= 0)
-          mapPointToGrid<kNodes, kAffine>(GridShapesAt(shapes, p), liquid_m(v.material_p(p)) != 0,
-                                          gravity, v, sums, p);
+          mapGridPointToGrid<kAffine>(shapes.grid_p(p), shapes.grid_row,
+                                      liquid_m(v.material_p(p)) != 0, gravity, v, sums, p);
     } else {
       bool wet = false, one_element = false;
       if (lanesMapTogether(element_p, v.material_p, liquid_m, first, count, wet, one_element)) {
@@ -543,15 +574,15 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
   const int count = points.count;
   constexpr int kNodes = Family::kNodes;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
-  // grid families: point by point.
+  // grid families: point by point, by blocks of slots (GridPointTransfers.hpp).
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real& ks, Real& kl, int& bad) {
     const int first = chunk * kLanes;
     if constexpr (kOnGrid<Family>) {
       for (int p = first; p < first + kLanes && p < count; ++p)
         if (element_p(p) >= 0)
-          updatePointVelocityAt<kNodes, kScheme>(GridShapesAt(shapes, p),
-                                                 liquid_m(material_p(p)) != 0, dt, pic_solid,
-                                                 pic_liquid, values_i, v, sums, p, ks, kl, bad);
+          updateGridPointVelocity<kScheme>(shapes.grid_p(p), shapes.grid_row,
+                                           liquid_m(material_p(p)) != 0, dt, pic_solid, pic_liquid,
+                                           values_i, v, sums, p, ks, kl, bad);
     } else {
       bool wet = false, one_element = false;
       if (lanesMapTogether(element_p, material_p, liquid_m, first, count, wet, one_element)) {
@@ -622,19 +653,12 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
     // c = rho_L n S_L and w = v_L - v_S enter the advective flux div(c w) (4.12, 4.16)
     // at the element centre (N = 1/kNodes), not at the point: per-point values differ
     // between rows of points in one element, a pressure mode the momentum equations
-    // cannot see (a one-element-wide quad4 column shows it), which then grows. The grid
-    // families (kCentre false) take the centre of the point's cell: with the point's own
-    // N the mode grew at the wetting front of V3 (p_L errors of 100 % of the range).
+    // cannot see (a one-element-wide quad4 column shows it), which then grows. (The grid
+    // families take the centre of the point's cell: gridStrainIncrements.)
+    static_assert(kCentre, "the grid families have their own kernel (GridPointTransfers.hpp)");
     constexpr Real centre = Real(1) / kNodes;
-    Real cell_centre[kNodes] = {};
-    Real cell_gradient[kNodes][kDim] = {};
-    if constexpr (!kCentre) at.centreWeights(cell_centre, cell_gradient);
     for (int a = 0; a < kNodes; ++a) {
-      T weight;
-      if constexpr (kCentre)
-        weight = splat<T>(centre);
-      else
-        weight = cell_centre[a];
+      const T weight = splat<T>(centre);
       const T dx = at.gradient(a, 0), dy = at.gradient(a, 1);
       const T vlx = at.nodal(values_i, a, kReadStrainVelocityLiquid),
               vly = at.nodal(values_i, a, kReadStrainVelocityLiquid + 1);
@@ -649,10 +673,7 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
       const auto untouched = at.value(a) == 0;  // a stencil slot of no weight
       alone = both(alone, either(untouched, both(shared_volume <= own, conditioned == 0)));
       divergence += vlx * dx + vly * dy;
-      if constexpr (kCentre)
-        relative_divergence += wx * dx + wy * dy;
-      else
-        relative_divergence += wx * cell_gradient[a][0] + wy * cell_gradient[a][1];
+      relative_divergence += wx * dx + wy * dy;
       if constexpr (kStoreGradients) {
         liquid_gradient[0] += vlx * dx;
         liquid_gradient[1] += vlx * dy;
@@ -662,13 +683,8 @@ KOKKOS_INLINE_FUNCTION void strainIncrementsAt(const At& at, bool wet, Real dt,
       w[0] += weight * wx;
       w[1] += weight * wy;
       content += weight * c;
-      if constexpr (kCentre) {
-        gradient[0] += c * dx;
-        gradient[1] += c * dy;
-      } else {
-        gradient[0] += c * cell_gradient[a][0];
-        gradient[1] += c * cell_gradient[a][1];
-      }
+      gradient[0] += c * dx;
+      gradient[1] += c * dy;
     }
   }
   if constexpr (kStoreGradients)
@@ -725,9 +741,9 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
             if (element_p(p) < 0)
               clearStrainIncrements(r, p);
             else
-              strainIncrementsAt<kNodes, kCentre, kStoreGradients>(GridShapesAt(shapes, p),
-                                                                   liquid_m(material_p(p)) != 0, dt,
-                                                                   values_i, strain_v, r, p);
+              gridStrainIncrements<kStoreGradients>(shapes.grid_p(p), shapes.grid_row,
+                                                    liquid_m(material_p(p)) != 0, dt, values_i,
+                                                    strain_v, r, p);
           }
         } else {
           bool wet = false, one_element = false;

@@ -225,8 +225,9 @@ TEST(GridShapes, CellCentreWeightsAreOneHalfOnTheCellsTwoLinesIncludingTheEdgeCe
       cellCentreWeights1D(t, 0, w);
       for (int k = 0; k < kGridStencil; ++k)
         for (int j = 0; j < kGridStencil; ++j)
-          if (at_centre.line[0][j] == t.line[0][k] && at_centre.value[0][j] > 0 && w[k] > 0)
+          if (at_centre.line[0][j] == t.line[0][k] && at_centre.value[0][j] > 0 && w[k] > 0) {
             EXPECT_NEAR(at_centre.value[0][j], w[k], 1e-14);
+          }
     }
 }
 

@@ -120,7 +120,7 @@ Scene schemeScene(const std::string& name) {
   const std::string shapes = scheme.substr(0, dash);
   const std::string transfer = dash == std::string::npos ? "" : scheme.substr(dash + 1);
   if ((shapes != "linear" && shapes != "gimp" && shapes != "bspline") ||
-      (transfer != "flip" && transfer != "apic"))
+      (transfer != "flip" && transfer != "apic" && transfer != "tpic"))
     throw std::invalid_argument("unknown scene '" + name + "'");
   Scene scene = mohrCoulombBlock(name);
   if (shapes != "linear") {  // the block's mesh as generateRectangle describes a grid
@@ -128,7 +128,9 @@ Scene schemeScene(const std::string& name) {
     scene.mesh.structured.spacing[0] = scene.mesh.structured.spacing[1] = kCell;
     scene.mesh.shape_functions = shapes == "gimp" ? ShapeFamily::Gimp : ShapeFamily::BSpline;
   }
-  scene.stage.transfer = transfer == "apic" ? TransferScheme::Apic : TransferScheme::Flip;
+  scene.stage.transfer = transfer == "apic"   ? TransferScheme::Apic
+                         : transfer == "tpic" ? TransferScheme::Tpic
+                                              : TransferScheme::Flip;
   return scene;
 }
 
@@ -186,7 +188,7 @@ Scene makeScene(const std::string& name) {
 std::vector<std::string> schemeSceneNames() {
   std::vector<std::string> names;
   for (const char* shapes : {"linear", "gimp", "bspline"})
-    for (const char* transfer : {"flip", "apic"})
+    for (const char* transfer : {"flip", "apic", "tpic"})
       names.push_back(std::string(kSchemePrefix) + shapes + "-" + transfer);
   return names;
 }

@@ -19,9 +19,9 @@
 ///                       of a step (not in the default list)
 ///   quad4-mohr-coulomb-<shapes>-<transfer>
 ///                       quad4-mohr-coulomb with the transfers on <shapes> = linear, gimp or
-///                       bspline (the mesh then a StructuredGrid) and <transfer> = flip or
-///                       apic: what each scheme costs (issue P9 item 8; "schemes" on the
-///                       command line names all six; not in the default list).
+///                       bspline (the mesh then a StructuredGrid) and <transfer> = flip,
+///                       apic or tpic: what each scheme costs (issue P9 item 8; "schemes" on
+///                       the command line names all nine; not in the default list).
 ///                       quad4-mohr-coulomb-linear-flip is quad4-mohr-coulomb, bit for bit
 ///
 /// Materials: linear elastic, E = 10 MPa, nu = 0.3, n = 0.4, rho_S = 2650 kg/m^3,
@@ -54,8 +54,8 @@ std::vector<std::string> sceneNames();
 /// Builds one scene by name; std::invalid_argument for an unknown name.
 Scene makeScene(const std::string& name);
 
-/// The six quad4-mohr-coulomb-<shapes>-<transfer> scenes: linear, gimp, bspline, each with
-/// flip then apic.
+/// The nine quad4-mohr-coulomb-<shapes>-<transfer> scenes: linear, gimp, bspline, each with
+/// flip, apic then tpic.
 std::vector<std::string> schemeSceneNames();
 
 /// The scenes of a comma-separated list, "schemes" standing for schemeSceneNames().

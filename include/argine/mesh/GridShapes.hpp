@@ -91,6 +91,7 @@ KOKKOS_INLINE_FUNCTION void gridStencil1D(ShapeFamily family, Real xi, int cells
     s.value[k] = value;
     s.gradient[k] = slope / h;
   }
+  if (base >= 0 && base + kGridStencil - 1 <= cells) return;  // no ghost (most points)
   for (int k = 0; k < kGridStencil; ++k) {
     const int line = s.line[k];
     if (line >= 0 && line <= cells) continue;

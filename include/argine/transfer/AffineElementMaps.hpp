@@ -20,6 +20,11 @@ struct AffineElementMaps {
   View<Real* [4]> inverse_jacobian_e;  ///< J^-1 row-major: (0,0), (0,1), (1,0), (1,1) (1/m)
   View<Real* [kDim]> origin_e;         ///< x at the origin of xi (Tri3: node 0; Quad4: centre)
   View<int*> affine_e;                 ///< 1 for an affine element, else 0
+  /// On a structured Quad4 mesh whose elements are the grid's cells in grid order (node
+  /// (i, j) = i + (cells[0] + 1) j, counter-clockwise from the lower left: the rectangle
+  /// generator's): the element of cell i + cells[0] j, -1 for a cell without one; else empty.
+  /// The grid families locate points with it by index arithmetic (GridRelocation.hpp).
+  View<int*> cell_element;
 
   AffineElementMaps() = default;
   /// Maps of every element of `mesh` (host work once, O(elements)).

@@ -94,8 +94,9 @@ struct PointShapes {
 
   /// The shape functions the transfers use (Mesh::shape_functions, or Linear where a caller
   /// asks for the element's own, e.g. the implicit path). GIMP and B-spline: every located
-  /// point has a TensorShape in grid_p (stored_p then holds the linear shapes of its
-  /// element, for the element-based parts: location, free boundary).
+  /// point has a TensorShape in grid_p, which is all their kernels read; stored_p holds the
+  /// linear shapes of its element after evaluatePointShapes and after a relocation by the
+  /// element route, and is left as it was by the grid's relocation (GridRelocation.hpp).
   ShapeFamily family = ShapeFamily::Linear;
   View<TensorShape*> grid_p;  ///< GIMP, B-spline: each point's 3 x 3 stencil
   int grid_row = 0;           ///< GIMP, B-spline: nodes per grid row (cells[0] + 1)
@@ -136,6 +137,9 @@ struct PointShapes {
 
   /// Allocate for n points.
   void allocate(int n);
+  /// grid_p sized for n points (kept when it is) and grid_row set for `grid`: what each
+  /// evaluation of the tensor shapes does first.
+  void prepareGrid(int n, const StructuredGrid& grid);
   /// Number of points allocated for.
   KOKKOS_INLINE_FUNCTION int count() const { return static_cast<int>(stored_p.extent(0)); }
 
@@ -278,7 +282,10 @@ struct RelocationCounts {
 /// gather. In an affine element xi = J^-1 (x - x_0) whichever way the element was found,
 /// so relocating points again from unchanged positions (e.g. after sorting them) gives the
 /// same shapes bit for bit. Results differ from the overload above only by round-off
-/// (J^-1 instead of Cramer's rule; J of a parallelogram Quad4 taken at its centre).
+/// (J^-1 instead of Cramer's rule; J of a parallelogram Quad4 taken at its centre). On the
+/// grid families with AffineElementMaps::cell_element: relocateOnGrid (GridRelocation.hpp;
+/// the element and tensor shape from the position alone, so the same bits again after a
+/// sort), changed_element then counting changed stencils too.
 RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator,
                                            const AffineElementMaps& maps, MaterialPoints& points,
                                            PointShapes& shapes);
