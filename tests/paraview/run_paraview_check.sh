@@ -25,16 +25,28 @@ fi
 
 # Our own Xvfb with -displayfd: the server itself picks a free display and reports it once it
 # is ready. (`xvfb-run -a` races when several checks start at once: they all take :99.)
+# Up to three tries: a server that dies at start (seen once, in a full run under load,
+# while another check started its own) is started again.
 display_file="$(mktemp)"
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$display_file" 2>/dev/null &
-xvfb_pid=$!
+xvfb_pid=""
 trap 'kill "$xvfb_pid" 2>/dev/null || true; wait "$xvfb_pid" 2>/dev/null || true; rm -f "$display_file"' EXIT
-for _ in $(seq 100); do
-  [ -s "$display_file" ] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || break
-  sleep 0.1
+display=""
+for attempt in 1 2 3; do
+  : >"$display_file"
+  Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$display_file" 2>/dev/null &
+  xvfb_pid=$!
+  for _ in $(seq 100); do
+    [ -s "$display_file" ] && break
+    kill -0 "$xvfb_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  display="$(head -n 1 "$display_file")"
+  [ -n "$display" ] && break
+  echo "paraview check: Xvfb did not start (try $attempt of 3)" >&2
+  kill "$xvfb_pid" 2>/dev/null || true
+  wait "$xvfb_pid" 2>/dev/null || true
+  sleep 1
 done
-display="$(head -n 1 "$display_file")"
 if [ -z "$display" ]; then
   echo "paraview check FAILED: Xvfb did not start" >&2
   exit 1
