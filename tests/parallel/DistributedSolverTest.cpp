@@ -19,6 +19,7 @@ namespace {
 using test::copyOf;
 using test::deckScene;
 using test::expectSameAsOneRank;
+using test::slumpingSlope;
 using Scene = test::RanksScene;
 
 // The relative differences allowed: round-off of sums taken in another order (partial
@@ -41,32 +42,6 @@ TEST(DistributedSolver, LeveeDrawdownMatchesOneRank) {
   // damping -alpha |f| sign(v) turns a round-off difference of a nodal velocity near zero
   // into an O(alpha |f|) force difference (doc/parallel.md); so does sorting on one rank.
   expectSameAsOneRank(deckScene("inputs/levee_drawdown/levee_drawdown.yaml", 1, 1, 300), kRoundOff);
-}
-
-/// A saturated Mohr-Coulomb block (c' = 0, phi' = 25 deg) on a rough base with a vertical
-/// free face, under gravity; a soft liquid (K_L = 2.2 MPa) for a long stable step, so the face
-/// slumps by more than a quarter element within the steps. The mesh is cut in the middle
-/// (equal weights), one column left of the face: points of the left rank flow into the right
-/// rank's elements. `damping`: the stage's local damping.
-Scene slumpingSlope(Real damping) {
-  Scene scene;
-  scene.mesh = test::rectangleMesh(16, 6, 2.0, 0.75, ElementType::Quad4);
-  scene.points = test::seedUniform(scene.mesh, 0, [](int e) { return e % 16 < 8 && e / 16 < 5; });
-  MaterialSpec soil =
-      test::elasticMaterial("soil", PhaseModel::Saturated, 5e6, 0.3, 0.4, 1e-2, 2.2e6);
-  soil.solid.model = SolidModel::MohrCoulomb;
-  soil.solid.cohesion = 0;
-  soil.solid.friction_angle = 25 * M_PI / 180;
-  scene.materials = {soil};
-  initialisePointState(scene.materials, scene.points);
-  StageSpec slump = test::makeStage("slump", SolverKind::Explicit, kStandardGravity, 0.0,
-                                    {test::solidFixity("base", "bottom", true, true),
-                                     test::solidFixity("wall", "left", true, false)});
-  slump.local_damping = damping;
-  scene.stages = {slump};
-  scene.steps_per_stage = 700;
-  scene.weights.assign(scene.mesh.numElements(), 1.0);
-  return scene;
 }
 
 /// The slope on all ranks against one rank (to `tolerance`); points must have migrated.

@@ -59,21 +59,7 @@ Scene slidingBlock(ShapeFamily family, TransferScheme scheme, PhaseModel phase) 
 /// The saturated Mohr-Coulomb slope of DistributedSolverTest (c' = 0, phi' = 25 deg, a free
 /// face one column left of the cut, rough base) slumping into the other rank's elements.
 Scene slumpingSlope(ShapeFamily family, TransferScheme scheme) {
-  Scene scene;
-  scene.mesh = test::rectangleMesh(16, 6, 2.0, 0.75, ElementType::Quad4);
-  scene.points = test::seedUniform(scene.mesh, 0, [](int e) { return e % 16 < 8 && e / 16 < 5; });
-  MaterialSpec soil =
-      test::elasticMaterial("soil", PhaseModel::Saturated, 5e6, 0.3, 0.4, 1e-2, 2.2e6);
-  soil.solid.model = SolidModel::MohrCoulomb;
-  soil.solid.cohesion = 0;
-  soil.solid.friction_angle = 25 * M_PI / 180;
-  scene.materials = {soil};
-  initialisePointState(scene.materials, scene.points);
-  scene.stages = {test::makeStage("slump", SolverKind::Explicit, kStandardGravity, 0.0,
-                                  {test::solidFixity("base", "bottom", true, true),
-                                   test::solidFixity("wall", "left", true, false)})};
-  scene.steps_per_stage = 700;
-  scene.weights.assign(scene.mesh.numElements(), 1.0);
+  Scene scene = test::slumpingSlope(0.0);
   onGrid(scene, 16, 6, 2.0, 0.75, family, scheme);
   return scene;
 }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "../physics/Harness.hpp"
 #include "argine/init/Initialisation.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
@@ -142,6 +143,26 @@ RanksScene deckScene(const std::string& relative_path, int first, int count, int
     applyMaterialChanges(deck.stages[s].name, deck.stages[s].material_changes, scene.materials);
   }
   scene.steps_per_stage = steps;
+  return scene;
+}
+
+RanksScene slumpingSlope(Real damping) {
+  RanksScene scene;
+  scene.mesh = rectangleMesh(16, 6, 2.0, 0.75, ElementType::Quad4);
+  scene.points = seedUniform(scene.mesh, 0, [](int e) { return e % 16 < 8 && e / 16 < 5; });
+  MaterialSpec soil = elasticMaterial("soil", PhaseModel::Saturated, 5e6, 0.3, 0.4, 1e-2, 2.2e6);
+  soil.solid.model = SolidModel::MohrCoulomb;
+  soil.solid.cohesion = 0;
+  soil.solid.friction_angle = 25 * M_PI / 180;
+  scene.materials = {soil};
+  initialisePointState(scene.materials, scene.points);
+  StageSpec slump = makeStage(
+      "slump", SolverKind::Explicit, kStandardGravity, 0.0,
+      {solidFixity("base", "bottom", true, true), solidFixity("wall", "left", true, false)});
+  slump.local_damping = damping;
+  scene.stages = {slump};
+  scene.steps_per_stage = 700;
+  scene.weights.assign(scene.mesh.numElements(), 1.0);
   return scene;
 }
 

@@ -56,6 +56,13 @@ void expectSameAsOneRank(const RanksScene& scene, Real tolerance, long long* mig
 /// The same, and on more than one rank points must have crossed a rank border.
 void expectSameAsOneRankWithMigration(const RanksScene& scene, Real tolerance);
 
+/// A saturated Mohr-Coulomb block (c' = 0, phi' = 25 deg) on a rough base with a vertical
+/// free face, under gravity; a soft liquid (K_L = 2.2 MPa) for a long stable step, so the face
+/// slumps by more than a quarter element within the 700 steps. The 16 x 6 quad4 mesh is cut in
+/// the middle (equal weights), one column left of the face: points of the left rank flow into
+/// the right rank's elements. `damping`: the stage's local damping.
+RanksScene slumpingSlope(Real damping);
+
 /// The scene of a deck: its stages [first, first + count), each run for `steps` steps (the
 /// material changes of those stages applied up front).
 RanksScene deckScene(const std::string& relative_path, int first, int count, int steps);
