@@ -228,6 +228,14 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
       case BoundaryKind::FrictionalWall:
         boundary_detail::addFrictionalWall(mesh, spec, host, where, frictional_);
         break;
+      case BoundaryKind::SideWalls:
+        // one channel: a second pair of walls would be a second width
+        if (side_walls_)
+          throw InputError(where, "a stage has one channel: side walls are already given as '" +
+                                      side_walls_name_ + "'");
+        side_walls_ = SideWallParameters{spec.channel_width, spec.friction_coefficient};
+        side_walls_name_ = spec.name;
+        break;
       case BoundaryKind::TotalHead:  // on the moving boundary: HydraulicConditions
       case BoundaryKind::PressureSeries:
       case BoundaryKind::Infiltration:

@@ -414,10 +414,10 @@ void addHydraulicBoundaryKeys(ListSchema& boundary) {
 void addFrictionalWallKeys(ListSchema& boundary) {
   const std::vector<std::string> wall{"frictional wall"};
   boundary.add(KeySpec::real("Friction Coefficient (-)", "-",
-                             "Coulomb coefficient mu of the soil on the wall: 0 smooth, large "
-                             "rough (the soil still lifts off)")
+                             "Coulomb coefficient mu of the soil on the wall(s): 0 smooth, "
+                             "large rough (the soil still lifts off a frictional wall)")
                    .atLeast(0)
-                   .when("Type", wall)
+                   .when("Type", {"frictional wall", "side walls"})
                    .require());
   boundary.add(KeySpec::reals("Normal", "-", 2,
                               "node set only: outward normal of the soil, pointing into the "
@@ -431,12 +431,24 @@ void addFrictionalWallKeys(ListSchema& boundary) {
                    .byDefault(true));
 }
 
+/// The walls of a quasi-2D channel (boundary/SideWalls.hpp, doc/theory.md Sec. 5.7).
+void addSideWallKeys(ListSchema& boundary) {
+  boundary.add(KeySpec::real("Channel Width (m)", "m",
+                             "distance W between the two walls of a quasi-2D channel, out "
+                             "of the plane of the section; their width-averaged Coulomb "
+                             "friction 2 mu max(-sigma'_zz, 0) / W opposes the solid's motion")
+                   .above(0)
+                   .when("Type", {"side walls"})
+                   .require());
+}
+
 ListSchema boundaryKeys() {
   ListSchema boundary;
   boundary.add(KeySpec::choice("Type", deckWords(kBoundaryWords),
                                "solid fixity (node set), impermeable (zero relative liquid "
                                "velocity), traction, liquid pressure (side set), frictional "
-                               "wall (Coulomb contact of the solid, side or node set)")
+                               "wall (Coulomb contact of the solid, side or node set), side "
+                               "walls (the two walls of a quasi-2D channel, no set)")
                    .require());
   boundary.add(KeySpec::text("Node Set", "mesh node set")
                    .when("Type", {"solid fixity", "impermeable", "frictional wall"})
@@ -461,6 +473,7 @@ ListSchema boundaryKeys() {
                    .when("Type", {"liquid pressure"})
                    .require());
   addFrictionalWallKeys(boundary);
+  addSideWallKeys(boundary);
   addHydraulicBoundaryKeys(boundary);
   return boundary;
 }

@@ -281,6 +281,10 @@ BoundarySpec parseBoundary(const DeckSection& boundary) {
     case BoundaryKind::FrictionalWall:
       parseFrictionalWall(boundary, spec);
       break;
+    case BoundaryKind::SideWalls:
+      spec.friction_coefficient = boundary.real("Friction Coefficient (-)");
+      spec.channel_width = boundary.real("Channel Width (m)");
+      break;
     case BoundaryKind::TotalHead:
     case BoundaryKind::PressureSeries:
     case BoundaryKind::Infiltration:

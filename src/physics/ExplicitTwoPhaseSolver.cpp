@@ -118,6 +118,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
   boundaries_ = StageBoundaryConditions(mesh_, stage);
+  side_walls_.configure(boundaries_.sideWalls(), mesh_.numNodes());
   hydraulic_ = HydraulicConditions(mesh_, stage, time_);  // tables count from the stage start
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
   free_boundary_stale_ = true;
@@ -234,7 +235,8 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
     solveLiquidMomentum();                    // step 1 (4.36)
     solveMixtureMomentum();                   // step 2 (4.37)
     applyAccelerationBoundaryConditions(dt);  // fixities, impermeable boundaries, walls
-    correctHydraulicAccelerations(dt);        // infiltration, seepage face (4.53-4.59)
+    side_walls_.constrainAccelerations(nodes_in_use_, momentum_, dt, grid_);  // channel walls
+    correctHydraulicAccelerations(dt);  // infiltration, seepage face (4.53-4.59)
   });
   timed(StepPhase::G2PVelocity, [&] { updatePointVelocities(dt); });  // step 3 (7.10, 7.11)
   timed(StepPhase::NodalSolve, [&] { updateNodalVelocities(); });     // step 4
@@ -275,6 +277,7 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   if (reproducible_sums_) foldCompensatedGridSums(nodes_in_use_, grid_, grid_lo_);
   boundaries_.addNodalForces(time_, grid_.mass_solid_i, grid_.force_mixture_i,
                              grid_.force_liquid_i);
+  side_walls_.mapResistance(points_, shapes_, nodes_in_use_, exchange_.get(), reproducible_sums_);
   computeNodalVelocities(nodes_in_use_, grid_);
 }
 
@@ -401,6 +404,7 @@ void ExplicitTwoPhaseSolver::applyVelocityBoundaryConditions() {
   boundaries_.frictionalContact().constrainVelocities(
       grid_.mass_solid_i, grid_.mass_liquid_i, grid_.velocity_solid_i, grid_.velocity_liquid_i,
       momentum_.liquid_with_solid);
+  side_walls_.holdStuckNodes(nodes_in_use_, momentum_, grid_);
 }
 
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {

@@ -71,6 +71,30 @@ TEST(DistributedSolver, SlopeSlidingOnFrictionalWallsMatchesOneRank) {
   expectSlopeAsOneRank(scene, kRoundOff);
 }
 
+/// The slope between the side walls of a channel (doc/theory.md Sec. 5.7): W = 4 m,
+/// mu_w = 0.2 (narrower or rougher walls hold it: no point would cross the rank border), a
+/// resistance summed over the ranks as the masses are.
+Scene slopeBetweenSideWalls() {
+  Scene scene = slumpingSlope(0.0);
+  BoundarySpec walls;
+  walls.name = "channel";
+  walls.kind = BoundaryKind::SideWalls;
+  walls.channel_width = 4.0;
+  walls.friction_coefficient = 0.2;
+  scene.stages[0].boundaries.push_back(walls);
+  return scene;
+}
+
+TEST(DistributedSolver, SlopeBetweenSideWallsMatchesOneRank) {
+  expectSlopeAsOneRank(slopeBetweenSideWalls(), kRoundOff);
+}
+
+TEST(DistributedSolver, SlopeBetweenSideWallsWithReproducibleSumsEqualsOneRankBitForBit) {
+  Scene scene = slopeBetweenSideWalls();
+  scene.reproducible_sums = true;
+  expectSameAsOneRank(scene, 0.0);
+}
+
 // ---- Reproducible sums (transfer/CompensatedSum.hpp): the same scenes, and the damped
 // stage, give the one-rank answer bit for bit.
 

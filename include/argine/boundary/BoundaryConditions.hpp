@@ -30,11 +30,13 @@
 /// addNodalForces / NodalConstraints interfaces each step.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "argine/boundary/FrictionalContact.hpp"
 #include "argine/boundary/NodalConstraints.hpp"
+#include "argine/boundary/SideWalls.hpp"
 #include "argine/core/Types.hpp"
 
 namespace argine {
@@ -129,6 +131,8 @@ class StageBoundaryConditions {
   const NodalConstraints& constraints() const { return constraints_; }
   /// The nodes of all frictional walls.
   const FrictionalContact& frictionalContact() const { return frictional_; }
+  /// The walls of a quasi-2D channel, if the stage has them (physics/SideWallFriction.hpp).
+  const std::optional<SideWallParameters>& sideWalls() const { return side_walls_; }
 
   /// Adds the tractions and liquid pressures at `time` (see the classes).
   void addNodalForces(Real time, const Kokkos::View<const Real*, MemSpace>& mass_solid_i,
@@ -151,6 +155,8 @@ class StageBoundaryConditions {
   std::vector<LiquidPressureBoundary> pressures_;
   NodalConstraints constraints_;
   FrictionalContact frictional_;
+  std::optional<SideWallParameters> side_walls_;
+  std::string side_walls_name_;
 };
 
 }  // namespace argine

@@ -136,6 +136,7 @@ enum class BoundaryKind {
   Traction,        ///< total traction vector on a side set (Pa)
   LiquidPressure,  ///< prescribed liquid pressure on a side set (Pa)
   FrictionalWall,  ///< rigid wall with Coulomb friction on a side or node set (solid contact)
+  SideWalls,       ///< the two walls of a quasi-2D channel, out of the plane (Coulomb friction)
   // Hydraulic conditions on the moving free boundary (thesis Sec. 4.1-4.3), see below.
   TotalHead,       ///< total head H(t) (4.50) on a zone of the free boundary or a side set
   PressureSeries,  ///< prescribed liquid pressure p(t) on a zone or a side set
@@ -207,6 +208,8 @@ struct BoundarySpec {
   bool has_normal = false;               ///< node set: `normal` given instead of the mesh geometry
   std::array<Real, 2> normal{0.0, 0.0};  ///< unit outward normal of the soil (into the wall)
   bool wall_impermeable = true;          ///< zero relative liquid velocity normal to the wall
+  // SideWalls (boundary/SideWalls.hpp; friction_coefficient above is their mu):
+  Real channel_width = 0;  ///< distance W between the walls (m)
 };
 
 // ---- stages: relaxation and material changes (issue P4) ----

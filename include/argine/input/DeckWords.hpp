@@ -98,6 +98,7 @@ inline constexpr DeckWord<BoundaryKind> kBoundaryWords[] = {
     {"infiltration", BoundaryKind::Infiltration},
     {"seepage face", BoundaryKind::SeepageFace},
     {"frictional wall", BoundaryKind::FrictionalWall},
+    {"side walls", BoundaryKind::SideWalls},
 };
 
 inline constexpr DeckWord<ZoneSpec::Kind> kZoneWords[] = {

@@ -75,6 +75,7 @@
 #include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
+#include "argine/physics/SideWallFriction.hpp"
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/StepProfile.hpp"
 #include "argine/physics/TimeStepControl.hpp"
@@ -306,6 +307,7 @@ class ExplicitTwoPhaseSolver {
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)
   StageBoundaryConditions boundaries_;
+  SideWallFriction side_walls_;  ///< the walls of a quasi-2D channel (stage `side walls`)
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
