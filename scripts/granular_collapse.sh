@@ -4,15 +4,17 @@
 #   scripts/granular_collapse.sh         the study: the nine transfer (FLIP, APIC, TPIC) x
 #                                        shape-function (linear, GIMP, B-spline) pairs at a = 2
 #                                        on L0/10, L0/20, L0/40; every aspect ratio's deck on
-#                                        L0/20 and FLIP/linear on L0/20; the decks on L0/10 and
-#                                        L0/40 (the costly a = 6 on L0/40 last).
+#                                        L0/20, without its side walls (plane strain) and with
+#                                        FLIP/linear; the decks on L0/10 and L0/40 (the costly
+#                                        a = 6 on L0/40 last).
 #                                        Writes verification/granular_collapse/results/
 #                                        (runs.csv, convergence.csv, accuracy_cost.csv,
 #                                        profiles/) and doc/figures/granular_collapse_*.png
 #   scripts/granular_collapse.sh pairs   the a = 2 pairs only (into results/, as the study)
-#   scripts/granular_collapse.sh sensitivity  floor friction, E, points per cell, time step
-#                                        and L0/80 at a = 0.5 (rows in results/runs.csv;
-#                                        reported, not used)
+#   scripts/granular_collapse.sh sensitivity  floor friction, E, points per cell, time step,
+#                                        L0/80 at a = 0.5, and the side walls' mu_w / W (the
+#                                        only way they enter) halved, or at mu_w = 0.30
+#                                        (rows in results/runs.csv; reported, not used)
 #   scripts/granular_collapse.sh quick   the decks as written (L0/20) only, into
 #                                        build/verification/granular_collapse/quick/
 # One run at a time (the machine's cores are shared). Runs whose row is in runs.csv already
@@ -74,11 +76,16 @@ case $mode in
       run --deck "$d" --set "Points Per Element=9" --tag-suffix _ppc9
       run --deck "$d" --set "Safety Factor=0.25" --tag-suffix _sf0.25
     done
-    run --deck "$case_dir/collapse_a0.5.yaml" --cells 80 ;;
+    run --deck "$case_dir/collapse_a0.5.yaml" --cells 80
+    for a in $ratios; do  # mu_w / W from 4.62 (the decks) to 2.31 and 3.00 per metre
+      run --deck "$case_dir/collapse_a$a.yaml" --set "Channel Width (m)=0.2" --tag-suffix _W0.2
+      run --deck "$case_dir/collapse_a$a.yaml" --set "Channel Width (m)=0.154" --tag-suffix _W0.154
+    done ;;
   *)
     pairs
     for a in $ratios; do
       run --deck "$case_dir/collapse_a$a.yaml"
+      run --deck "$case_dir/collapse_a$a.yaml" --without-side-walls --tag-suffix _nowalls
       run --deck "$case_dir/collapse_a$a.yaml" --shape linear --transfer FLIP
     done
     for a in $ratios; do run --deck "$case_dir/collapse_a$a.yaml" --cells 10; done

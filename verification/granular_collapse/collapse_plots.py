@@ -56,7 +56,17 @@ def draw_laws(ax_r, ax_h):
     ax_h.plot(a, ref.nguyen_height(a), ":", color="0.4", label="Nguyen et al. 2015 (true 2-D)")
 
 
-def runout_figure(groups, scheme, path):
+NO_WALLS = " without side walls"  # collapse_run.py --without-side-walls: plane strain
+
+
+def without_walls(rows, scheme, cells=20):
+    """The decks' runs without their side walls, sorted by a: [(a, row)]."""
+    return sorted((r["a"], r) for r in rows
+                  if r["deck"].endswith(NO_WALLS) and (r["shape"], r["transfer"]) == scheme
+                  and int(r["cells"]) == cells and r["status"] == "ok")
+
+
+def runout_figure(groups, scheme, path, rows=()):
     fig, (ax_r, ax_h) = plt.subplots(1, 2, figsize=(11, 4.6), layout="constrained")
     draw_laws(ax_r, ax_h)
     staron = [(0.5, 0.938, 0.499), (1.42, 3.503, 0.748), (6.26, 12.454, 1.272)]
@@ -77,6 +87,13 @@ def runout_figure(groups, scheme, path):
         ax_r.plot(a, [p[1]["runout_L99"] for p in pts], marker, mfc="none", color=colour, ms=8,
                   label=label + ": L99")
         ax_h.plot(a, [p[1]["height"] for p in pts], marker, color=colour, ms=6, label=label)
+    plane = without_walls(rows, scheme)
+    if plane:
+        label = f"argine {scheme[0]}/{scheme[1]}, L0/20, no side walls (plane strain)"
+        a = [p[0] for p in plane]
+        ax_r.plot(a, [p[1]["runout_front_fixed"] for p in plane], "s", color="tab:gray", ms=5,
+                  label=label + ": front")
+        ax_h.plot(a, [p[1]["height"] for p in plane], "s", color="tab:gray", ms=5, label=label)
     for ax, what in ((ax_r, "run-out (L_inf - L0) / L0"), (ax_h, "final height H_inf / L0")):
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -121,6 +138,10 @@ def profiles_figure(groups, scheme, folder, path):
         if p is not None:
             ax.plot(p[0], smoothed(p[1]), "--", color="tab:orange", lw=1,
                     label="argine linear/FLIP L0/20")
+        p = read_profile(folder, tag(a, 20, *scheme) + "_nowalls")
+        if p is not None:
+            ax.plot(p[0], smoothed(p[1]), ":", color="tab:gray", lw=1.2,
+                    label=f"argine {scheme[0]}/{scheme[1]} L0/20, no side walls")
         ax.set_ylim(0, max(1.05 * a if a < 1.15 else 1.4 * float(ref.lube_height(a)), 0.3))
         ax.set_xlim(0, max(1 + 1.6 * float(ref.runout_band(a)[1]), 2))
         ax.set_ylabel("h / L0")
@@ -227,7 +248,7 @@ def draw_all(rows, groups, conv, cost, scheme, profiles, figures):
     os.makedirs(figures, exist_ok=True)
     out = {k: os.path.join(figures, f"granular_collapse_{k}.png")
            for k in ("runout", "profiles", "convergence", "accuracy_cost", "energy")}
-    runout_figure(groups, scheme, out["runout"])
+    runout_figure(groups, scheme, out["runout"], rows)
     profiles_figure(groups, scheme, profiles, out["profiles"])
     convergence_figure(groups, scheme, out["convergence"])
     accuracy_cost_figure(cost, out["accuracy_cost"])

@@ -3,12 +3,14 @@
 
   collapse_run.py --deck collapse_a2.yaml [--cells 20] [--shape linear|GIMP|B-spline]
                   [--transfer FLIP|APIC|TPIC] [--work DIR] [--csv FILE] [--profiles DIR]
-                  [--set 'KEY=VALUE' ...] [--tag-suffix S] [--argine build/argine] [--keep]
+                  [--set 'KEY=VALUE' ...] [--without-side-walls] [--tag-suffix S]
+                  [--argine build/argine] [--keep]
                   [--skip-existing] [--new-csv]
 
 Writes a copy of the deck with the cell size L0/cells, the shape functions and the velocity
 transfer replaced (nothing else changes; --set replaces the first value of any other key, for
-sensitivity runs, e.g. --set "Young's Modulus (Pa)=4.0e6"), runs it into WORK/<tag>/, measures it
+sensitivity runs, e.g. --set "Young's Modulus (Pa)=4.0e6"; --without-side-walls drops the
+channel's side walls: plane strain, frictionless walls), runs it into WORK/<tag>/, measures it
 (collapse_results.measure), appends one row to --csv (created with a header) and writes the
 final deposit profile to PROFILES/<tag>_profile.csv and the point kinetic energy at the
 outputs to PROFILES/<tag>_energy.csv. Prints the row. Without --cells,
@@ -65,7 +67,11 @@ def replace(text, key, value):
                   lambda m: m.group(1) + value, text, count=1, flags=re.M)
 
 
-def variant(text, cells, shape, transfer, settings=()):
+def variant(text, cells, shape, transfer, settings=(), without_side_walls=False):
+    if without_side_walls:
+        text, count = re.subn(r"^[^\n]*\{Type: side walls[^\n]*\n", "", text, flags=re.M)
+        if count != 1:
+            sys.exit("collapse_run: --without-side-walls: no one-line side walls condition")
     for setting in settings:
         key, value = setting.split("=", 1)
         if not re.search(r"(?:^\s*|[{,]\s*)" + re.escape(key) + r":", text, re.M):
@@ -127,6 +133,8 @@ def main():
     parser.add_argument("--profiles")
     parser.add_argument("--argine", default=os.path.join(ROOT, "build", "argine"))
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
+    parser.add_argument("--without-side-walls", action="store_true",
+                        help="drop the channel's side walls (plane strain, frictionless walls)")
     parser.add_argument("--tag-suffix", default="", help="appended to the run's name")
     parser.add_argument("--keep", action="store_true")
     parser.add_argument("--skip-existing", action="store_true")
@@ -134,14 +142,16 @@ def main():
     args = parser.parse_args()
 
     with open(args.deck) as handle:
-        text = variant(handle.read(), args.cells, args.shape, args.transfer, args.set)
+        text = variant(handle.read(), args.cells, args.shape, args.transfer, args.set,
+                       args.without_side_walls)
     column = column_of(text)
     name = deck_value(text, "Name")
     shape = deck_value(text, "Shape Functions")
     transfer = deck_value(text, "Velocity Transfer")
     cells = int(round(column["L0"] / column["h"]))
     tag = f"{name}_h{cells}_{shape}_{transfer}{args.tag_suffix}"
-    label = os.path.basename(args.deck) + "".join(" " + s for s in args.set)
+    label = (os.path.basename(args.deck) + "".join(" " + s for s in args.set)
+             + (" without side walls" if args.without_side_walls else ""))
     if args.skip_existing and args.csv and os.path.exists(args.csv):
         with open(args.csv, newline="") as handle:
             for row in csv.DictReader(handle):
