@@ -261,12 +261,37 @@ int evaluateGridShapes(const Mesh& mesh, const MaterialPoints& points, PointShap
   return changed;
 }
 
+namespace {
+
+/// clearOfGridEdges on every point, moving its position and displacement together.
+void keepPointsClearOfGridEdges(const StructuredGrid& grid, MaterialPoints& points) {
+  const auto position_p = points.position;
+  const auto displacement_p = points.displacement;
+  const auto volume0_p = points.initial_volume;
+  Kokkos::parallel_for(
+      "keep_points_clear_of_grid_edges", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        const Real l = gimpHalfWidth(volume0_p(p), grid);
+        for (int d = 0; d < kDim; ++d) {
+          const Real xi = (position_p(p, d) - grid.origin[d]) / grid.spacing[d];
+          const Real kept = clearOfGridEdges(xi, grid.cells[d], l);
+          if (kept == xi) continue;
+          const Real shift = (kept - xi) * grid.spacing[d];
+          position_p(p, d) += shift;
+          displacement_p(p, d) += shift;
+        }
+      });
+}
+
+}  // namespace
+
 RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator& locator,
                                            const AffineElementMaps& maps, MaterialPoints& points,
                                            PointShapes& shapes) {
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
   if (shapes.onGrid()) {
+    keepPointsClearOfGridEdges(mesh.structured, points);
     // By index arithmetic where the elements are the grid's cells (the transfers read only
     // the tensor shapes), else by the element route: the element's linear shapes, plus:
     if (maps.cell_element.extent(0) > 0)

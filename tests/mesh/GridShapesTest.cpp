@@ -160,6 +160,29 @@ TEST(GridShapes, GimpOfAPointWhoseDomainLiesInsideNeedsNoFolding) {
     }
 }
 
+TEST(GridShapes, PointsKeepHalfTheirHalfWidthFromTheGridsEdges) {
+  // l = 0.25 cells: the centre stays 0.125 cells from either edge of a 4-cell axis; inside
+  // that it moves nothing, and a centre outside the grid is left to leave it.
+  EXPECT_EQ(clearOfGridEdges(0.0, 4, 0.25), 0.125);
+  EXPECT_EQ(clearOfGridEdges(0.05, 4, 0.25), 0.125);
+  EXPECT_EQ(clearOfGridEdges(0.125, 4, 0.25), 0.125);
+  EXPECT_EQ(clearOfGridEdges(0.2, 4, 0.25), 0.2);
+  EXPECT_EQ(clearOfGridEdges(2.0, 4, 0.25), 2.0);
+  EXPECT_EQ(clearOfGridEdges(3.95, 4, 0.25), 3.875);
+  EXPECT_EQ(clearOfGridEdges(4.0, 4, 0.25), 3.875);
+  EXPECT_EQ(clearOfGridEdges(-0.01, 4, 0.25), -0.01);
+  EXPECT_EQ(clearOfGridEdges(4.01, 4, 0.25), 4.01);
+  // Why: at the kept centre the folded uGIMP weight of line 1 is l / 2 (the linear hat's
+  // xi there), its gradient 1 / h: |dN|^2 / N = 8 / h^2 instead of growing without bound.
+  GridStencil1D s;
+  gridStencil1D(ShapeFamily::Gimp, 0.125, 4, 1.0, 0.25, s);
+  for (int k = 0; k < kGridStencil; ++k)
+    if (s.line[k] == 1) {
+      EXPECT_DOUBLE_EQ(s.value[k], 0.125);
+      EXPECT_DOUBLE_EQ(s.gradient[k], 1.0);
+    }
+}
+
 TEST(GridShapes, TensorShapeOfAPointOnTheGrid) {
   // 4 x 3 cells of 0.5 x 0.25 m from (1, 2); a point at (2.3, 2.4) is at xi = (2.6, 1.6):
   // B-spline base lines floor(2.1) = 2 and floor(1.1) = 1.

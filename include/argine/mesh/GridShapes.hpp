@@ -172,4 +172,20 @@ KOKKOS_INLINE_FUNCTION Real gimpHalfWidth(Real initial_volume, const StructuredG
   return l < 0.5 ? l : 0.5;
 }
 
+/// The coordinate (cells) a point at xi on an axis of `cells` cells keeps, with its domain of
+/// half-width l (cells, gimpHalfWidth): xi itself, or l / 2 from an edge of the grid where
+/// it came closer. A point may be pressed against a wall at the grid's edge until half its
+/// domain lies beyond it (a volumetric strain of 50 % normal to the wall, more than any soil
+/// takes), not further: nearer the edge line the folded weight of the next line inwards
+/// falls to xi (the linear hat) while its gradient stays 1/h, so a node of vanishing mass
+/// gets a finite force and APIC's C_p carries that node's runaway velocity into the point
+/// (doc/theory.md Sec. 3.11, "Points at the grid's edge"). A centre outside the grid is
+/// left as it is (the point leaves the mesh).
+KOKKOS_INLINE_FUNCTION Real clearOfGridEdges(Real xi, int cells, Real half_width) {
+  const Real clearance = 0.5 * half_width;
+  if (xi >= 0 && xi < clearance) return clearance;
+  if (xi <= cells && xi > cells - clearance) return cells - clearance;
+  return xi;
+}
+
 }  // namespace argine
