@@ -1,5 +1,7 @@
 #include "argine/parallel/NodalExchange.hpp"
 
+#include <stdexcept>
+
 #include <mpi.h>
 
 #include "argine/parallel/RankDecomposition.hpp"
@@ -21,11 +23,13 @@ void NodalExchange::sum(const std::vector<NodalFieldRef>& fields) {
   exchange(fields, 0);
 }
 
-void NodalExchange::sumCompensated(std::initializer_list<NodalFieldRef> hi,
-                                   std::initializer_list<NodalFieldRef> lo) {
+void NodalExchange::sumCompensated(const std::vector<NodalFieldRef>& hi,
+                                   const std::vector<NodalFieldRef>& lo) {
   fields_.assign(hi.begin(), hi.end());
   int width = 0;
   for (const auto& f : fields_) width += f.components;
+  if (lo.size() != kLowParts * hi.size())
+    throw std::logic_error("NodalExchange::sumCompensated: every field needs its low parts");
   fields_.insert(fields_.end(), lo.begin(), lo.end());
   exchange(fields_, width);
 }
@@ -71,17 +75,23 @@ void NodalExchange::exchange(const std::vector<NodalFieldRef>& fields, int compe
   traffic_.bytes += traffic_.last_bytes;
 
   // Ascending rank order at every node: the lower neighbours, this rank, the higher ones.
-  // Compensated: the first `compensated_width` values of a node are the high parts, the next
-  // as many their low parts; a rank's (hi, lo) is added to the total's with TwoSum.
+  // Reproducible sums: the first `compensated_width` values of a node are the sums' part 0,
+  // each next as many a low part; a rank's sum is merged into the total's (exact: the order
+  // of the ranks does not matter to these).
   std::fill(total_.begin(), total_.begin() + slots * width, 0.0);
   const int me = decomposition_.rank();
-  const int pairs = compensated_width;
+  const int sums = compensated_width;
   auto add_node = [&](Real* total, const Real* partial) {
-    for (int c = 0; c < pairs; ++c) {
-      addCompensated(total[c], total[pairs + c], partial[c]);
-      total[pairs + c] += partial[pairs + c];
+    for (int c = 0; c < sums; ++c) {
+      Real* into[kSumParts];
+      Real from[kSumParts];
+      for (int k = 0; k < kSumParts; ++k) {
+        into[k] = &total[c + k * sums];
+        from[k] = partial[c + k * sums];
+      }
+      addSumToSum(into, from);
     }
-    for (int c = 2 * pairs; c < width; ++c) total[c] += partial[c];
+    for (int c = kSumParts * sums; c < width; ++c) total[c] += partial[c];
   };
   bool own_added = false;
   auto add_own = [&] {

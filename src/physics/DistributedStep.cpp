@@ -13,48 +13,57 @@
 
 namespace argine {
 
-void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& g, GridFields* compensation) {
-  if (!compensation) {
-    exchange.sum({nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
-                  nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i),
-                  nodalField(g.volume_liquid_i), nodalField(g.momentum_solid_i),
-                  nodalField(g.momentum_liquid_i), nodalField(g.force_mixture_i),
-                  nodalField(g.force_liquid_i)});
-    return;
+namespace {
+
+/// The NodalFieldRefs of `refs(fields)` for each low part, part after part (sumCompensated).
+template <class Fields, class Refs>
+std::vector<NodalFieldRef> lowRefs(const LowParts<Fields>& lo, const Refs& refs) {
+  std::vector<NodalFieldRef> all;
+  for (int k = 0; k < kLowParts; ++k) {
+    const std::vector<NodalFieldRef> part = refs(lo[k]);
+    all.insert(all.end(), part.begin(), part.end());
   }
-  const GridFields& c = *compensation;
-  exchange.sumCompensated(
-      {nodalField(g.mass_solid_i), nodalField(g.mass_liquid_i),
-       nodalField(g.mass_liquid_intrinsic_i), nodalField(g.drag_i), nodalField(g.volume_liquid_i),
-       nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i),
-       nodalField(g.force_mixture_i), nodalField(g.force_liquid_i)},
-      {nodalField(c.mass_solid_i), nodalField(c.mass_liquid_i),
-       nodalField(c.mass_liquid_intrinsic_i), nodalField(c.drag_i), nodalField(c.volume_liquid_i),
-       nodalField(c.momentum_solid_i), nodalField(c.momentum_liquid_i),
-       nodalField(c.force_mixture_i), nodalField(c.force_liquid_i)});
+  return all;
 }
 
-void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& g, GridFields* compensation) {
-  if (!compensation) {
-    exchange.sum({nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)});
-    return;
-  }
-  exchange.sumCompensated(
-      {nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)},
-      {nodalField(compensation->momentum_solid_i), nodalField(compensation->momentum_liquid_i)});
+std::vector<NodalFieldRef> gridSumRefs(const GridFields& g) {
+  return {nodalField(g.mass_solid_i),
+          nodalField(g.mass_liquid_i),
+          nodalField(g.mass_liquid_intrinsic_i),
+          nodalField(g.drag_i),
+          nodalField(g.volume_liquid_i),
+          nodalField(g.momentum_solid_i),
+          nodalField(g.momentum_liquid_i),
+          nodalField(g.force_mixture_i),
+          nodalField(g.force_liquid_i)};
+}
+
+std::vector<NodalFieldRef> momentumRefs(const GridFields& g) {
+  return {nodalField(g.momentum_solid_i), nodalField(g.momentum_liquid_i)};
+}
+
+std::vector<NodalFieldRef> boundaryRefs(const BoundaryGradientFields& f) {
+  return {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)};
+}
+
+}  // namespace
+
+void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& g,
+                          LowParts<GridFields>* compensation) {
+  if (!compensation) return exchange.sum(gridSumRefs(g));
+  exchange.sumCompensated(gridSumRefs(g), lowRefs(*compensation, gridSumRefs));
+}
+
+void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& g,
+                             LowParts<GridFields>* compensation) {
+  if (!compensation) return exchange.sum(momentumRefs(g));
+  exchange.sumCompensated(momentumRefs(g), lowRefs(*compensation, momentumRefs));
 }
 
 void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& f,
-                                       BoundaryGradientFields* compensation) {
-  if (!compensation) {
-    exchange.sum(
-        {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)});
-    return;
-  }
-  const BoundaryGradientFields& c = *compensation;
-  exchange.sumCompensated(
-      {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)},
-      {nodalField(c.mass_gradient_i), nodalField(c.flux_weight_i), nodalField(c.wet_volume_i)});
+                                       LowParts<BoundaryGradientFields>* compensation) {
+  if (!compensation) return exchange.sum(boundaryRefs(f));
+  exchange.sumCompensated(boundaryRefs(f), lowRefs(*compensation, boundaryRefs));
 }
 
 namespace {
@@ -152,27 +161,28 @@ void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
   std::copy(scratch.begin() + head + kFixed, scratch.begin() + n, also.begin());
 }
 
-void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo,
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<CompensatedReal>& sums,
                              std::vector<Real>& scratch) {
   int ranks = 1;
   MPI_Comm_size(comm, &ranks);
-  const std::size_t n = hi.size();
-  // scratch = [this rank's hi, lo | every rank's hi, lo]
-  const std::size_t needed = 2 * n * (1 + static_cast<std::size_t>(ranks));
+  const std::size_t n = sums.size() * kSumParts;
+  // scratch = [this rank's parts | every rank's parts]
+  const std::size_t needed = n * (1 + static_cast<std::size_t>(ranks));
   if (scratch.size() < needed) scratch.resize(needed);
   Real* mine = scratch.data();
-  Real* all = mine + 2 * n;
-  std::copy(hi.begin(), hi.end(), mine);
-  std::copy(lo.begin(), lo.end(), mine + n);
-  MPI_Allgather(mine, static_cast<int>(2 * n), MPI_DOUBLE, all, static_cast<int>(2 * n), MPI_DOUBLE,
-                comm);
-  for (std::size_t k = 0; k < n; ++k) {
+  Real* all = mine + n;
+  for (std::size_t k = 0; k < sums.size(); ++k)
+    std::copy(sums[k].part, sums[k].part + kSumParts, mine + k * kSumParts);
+  MPI_Allgather(mine, static_cast<int>(n), MPI_DOUBLE, all, static_cast<int>(n), MPI_DOUBLE, comm);
+  for (std::size_t k = 0; k < sums.size(); ++k) {
     CompensatedReal total;
     for (int r = 0; r < ranks; ++r) {
-      const Real* theirs = &all[2 * n * static_cast<std::size_t>(r)];
-      total.add(CompensatedReal{theirs[k], theirs[n + k]});
+      CompensatedReal theirs;
+      const Real* parts = &all[n * static_cast<std::size_t>(r) + k * kSumParts];
+      std::copy(parts, parts + kSumParts, theirs.part);
+      total.add(theirs);
     }
-    hi[k] = total.value();
+    sums[k] = total;
   }
 }
 

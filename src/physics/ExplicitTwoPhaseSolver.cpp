@@ -202,14 +202,17 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
 }
 
 void ExplicitTwoPhaseSolver::setReproducibleSums(bool on) {
-  // A compensated sum is added in one order: the kernels write hi and lo directly, which is
-  // race-free on Kokkos Serial only (a threaded port needs per-thread pairs, combined in order).
+  // A binned sum is added to in place: the kernels write its parts directly, which is
+  // race-free on Kokkos Serial only (a threaded port needs per-thread sums, merged).
   if (on && !std::is_same_v<ExecSpace, Kokkos::Serial>)
     throw std::logic_error("reproducible sums need the Kokkos Serial execution space");
   reproducible_sums_ = on;
   const int nodes = on ? mesh_.numNodes() : 0;
-  if (grid_lo_.numNodes() != nodes) grid_lo_.allocate(nodes);
-  if (static_cast<int>(boundary_lo_.wet_volume_i.extent(0)) != nodes) boundary_lo_.allocate(nodes);
+  for (int k = 0; k < kLowParts; ++k) {
+    if (grid_lo_[k].numNodes() != nodes) grid_lo_[k].allocate(nodes);
+    if (static_cast<int>(boundary_lo_[k].wet_volume_i.extent(0)) != nodes)
+      boundary_lo_[k].allocate(nodes);
+  }
   averaging_.compensateSums(on);
   head_stabilisation_.compensateSums(on);
 }
@@ -377,11 +380,9 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   const std::vector<Real> masses = boundaryFluxMasses(
       hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, boundary_fields_,
       grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>(),
-      reproducible_sums_ ? &flux_mass_lo_ : nullptr);
-  if (reproducible_sums_) flux_mass_hi_ = masses;  // combined over the ranks at the step's end
+      reproducible_sums_ ? &flux_mass_sums_ : nullptr);  // merged over the ranks at the step's end
   for (int c = 0; c <= conditions; ++c)
-    boundary_flux_volumes_[c] =
-        (reproducible_sums_ ? masses[c] + flux_mass_lo_[c] : masses[c]) / reference_liquid_density_;
+    boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
 
 void ExplicitTwoPhaseSolver::solveLiquidMomentum() {
@@ -520,21 +521,17 @@ void ExplicitTwoPhaseSolver::completeStepOverRanks() {
   } else {
     time_step_.restore(state_before_candidate_);  // the next chooseTimeStep() does it again
   }
-  if (reproducible_sums_) {              // the totals again, from the ranks' compensated pairs
-    std::vector<Real>& hi = totals_hi_;  // members: no allocation per step
-    std::vector<Real>& lo = totals_lo_;
-    hi.assign({kinetic_pairs_.solid.hi, kinetic_pairs_.liquid.hi, liquid_mass_pair_.hi});
-    lo.assign({kinetic_pairs_.solid.lo, kinetic_pairs_.liquid.lo, liquid_mass_pair_.lo});
-    if (!hydraulic_.empty()) {
-      hi.insert(hi.end(), flux_mass_hi_.begin(), flux_mass_hi_.end());
-      lo.insert(lo.end(), flux_mass_lo_.begin(), flux_mass_lo_.end());
-    }
-    sumCompensatedOverRanks(ranks_->comm(), hi, lo, reduction_scratch_);
-    sums.kinetic_solid = hi[0];
-    sums.kinetic_liquid = hi[1];
-    sums.liquid_mass = hi[2];
-    for (std::size_t c = 3; c < hi.size(); ++c)
-      boundary_flux_volumes_[c - 3] = hi[c] / reference_liquid_density_;
+  if (reproducible_sums_) {  // the totals again, from the ranks' binned sums
+    std::vector<CompensatedReal>& totals = totals_sums_;  // a member: no allocation per step
+    totals.assign({kinetic_pairs_.solid, kinetic_pairs_.liquid, liquid_mass_pair_});
+    if (!hydraulic_.empty())
+      totals.insert(totals.end(), flux_mass_sums_.begin(), flux_mass_sums_.end());
+    sumCompensatedOverRanks(ranks_->comm(), totals, reduction_scratch_);
+    sums.kinetic_solid = totals[0].value();
+    sums.kinetic_liquid = totals[1].value();
+    sums.liquid_mass = totals[2].value();
+    for (std::size_t c = 3; c < totals.size(); ++c)
+      boundary_flux_volumes_[c - 3] = totals[c].value() / reference_liquid_density_;
   }
   kinetic_.solid = sums.kinetic_solid;
   kinetic_.liquid = sums.kinetic_liquid;

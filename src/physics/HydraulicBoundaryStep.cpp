@@ -20,7 +20,7 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
                               const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                               const Kokkos::View<const int*, MemSpace>& liquid_m,
                               const GridFields& grid, BoundaryGradientFields& fields,
-                              const BoundaryGradientFields& lo) {
+                              const LowParts<BoundaryGradientFields>& lo) {
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto material_p = points.material;
@@ -34,6 +34,10 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   auto weight_sv = KE::create_scatter_view(fields.flux_weight_i);
   auto wet_sv = KE::create_scatter_view(fields.wet_volume_i);
   const BoundaryGradientFields hi = fields;
+  using B = BoundaryGradientFields;
+  const auto lo_gradient = lowPartsOf(lo, &B::mass_gradient_i);
+  const auto lo_weight = lowPartsOf(lo, &B::flux_weight_i);
+  const auto lo_wet = lowPartsOf(lo, &B::wet_volume_i);
   constexpr int kNodes = Family::kNodes;
   Kokkos::parallel_for(
       "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
@@ -46,15 +50,15 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
         auto gradient_i = gradient_sv.access();
         for (int a = 0; a < kNodes; ++a)
           for (int d = 0; d < kDim; ++d)
-            addToNode<kCompensated>(gradient_i, hi.mass_gradient_i, lo.mass_gradient_i,
-                                    shape.node[a], d, m_mixture * shape.gradient[a][d]);
+            addToNode<kCompensated>(gradient_i, hi.mass_gradient_i, lo_gradient, shape.node[a], d,
+                                    m_mixture * shape.gradient[a][d]);
         if (!wet) return;
         auto weight_i = weight_sv.access();
         auto wet_i = wet_sv.access();
         const Real volume = volume_p(p);
         const Real wet_volume = porosity_p(p) * saturation_p(p) * volume;
         for (int a = 0; a < kNodes; ++a)
-          addToNode<kCompensated>(wet_i, hi.wet_volume_i, lo.wet_volume_i, shape.node[a],
+          addToNode<kCompensated>(wet_i, hi.wet_volume_i, lo_wet, shape.node[a],
                                   shape.value[a] * wet_volume);
         if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
           // the same centre value and point gradient of c as interpolateVelocityGradients
@@ -73,14 +77,14 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
           for (int a = 0; a < kNodes; ++a)
             for (int d = 0; d < kDim; ++d)
               addToNode<kCompensated>(
-                  weight_i, hi.flux_weight_i, lo.flux_weight_i, shape.node[a], d,
+                  weight_i, hi.flux_weight_i, lo_weight, shape.node[a], d,
                   volume * (c_centre * shape.gradient[a][d] + weight(a) * grad_c[d]));
         } else {
           const Real m_liquid = mass_liquid_p(p);
           for (int a = 0; a < kNodes; ++a)
             for (int d = 0; d < kDim; ++d)
-              addToNode<kCompensated>(weight_i, hi.flux_weight_i, lo.flux_weight_i, shape.node[a],
-                                      d, m_liquid * shape.gradient[a][d]);
+              addToNode<kCompensated>(weight_i, hi.flux_weight_i, lo_weight, shape.node[a], d,
+                                      m_liquid * shape.gradient[a][d]);
         }
       });
   KE::contribute(fields.mass_gradient_i, gradient_sv);
@@ -118,21 +122,22 @@ void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shape
                           const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                           const Kokkos::View<const int*, MemSpace>& liquid_m,
                           const GridFields& grid, BoundaryGradientFields& fields,
-                          const BoundaryGradientFields* compensation) {
+                          const LowParts<BoundaryGradientFields>* compensation) {
   withShapeFamily(shapes, [&](auto family) {
     using Family = decltype(family);
     compensation ? mapBoundaryGradientsImpl<Family, true>(points, shapes, materials_m, liquid_m,
                                                           grid, fields, *compensation)
                  : mapBoundaryGradientsImpl<Family, false>(points, shapes, materials_m, liquid_m,
-                                                           grid, fields, fields);
+                                                           grid, fields, {});
   });
 }
 
 void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientFields& f,
-                                 BoundaryGradientFields& lo) {
-  foldCompensatedSums(nodes, f.mass_gradient_i, lo.mass_gradient_i);
-  foldCompensatedSums(nodes, f.flux_weight_i, lo.flux_weight_i);
-  foldCompensatedSums(nodes, f.wet_volume_i, lo.wet_volume_i);
+                                 const LowParts<BoundaryGradientFields>& lo) {
+  using B = BoundaryGradientFields;
+  foldCompensatedSums(nodes, f.mass_gradient_i, lowPartsOf(lo, &B::mass_gradient_i));
+  foldCompensatedSums(nodes, f.flux_weight_i, lowPartsOf(lo, &B::flux_weight_i));
+  foldCompensatedSums(nodes, f.wet_volume_i, lowPartsOf(lo, &B::wet_volume_i));
 }
 
 void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {
@@ -246,7 +251,7 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned,
-                                     std::vector<Real>* compensation) {
+                                     std::vector<CompensatedReal>* compensation) {
   std::vector<Real> masses(conditions + 1, 0.0);
   const auto weight_i = fields.flux_weight_i;
   const auto vl_i = grid.velocity_liquid_i;
@@ -260,17 +265,14 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
   const auto owner = ownership.owner;
   const bool masked = rank_owned.extent(0) > 0;
   const auto nodes = active.nodes();
-  if (compensation) {  // reproducible sums: the same terms, compensated, in one order (host)
-    std::vector<CompensatedReal> sums(conditions + 1);
+  if (compensation) {  // reproducible sums: the same terms, binned, in one order (host)
+    std::vector<CompensatedReal>& sums = *compensation;
+    sums.assign(conditions + 1, CompensatedReal{});
     for (int j = 0; j < ownership.count(); ++j)
       if (owner(j) >= 0 && owner(j) < conditions && (!masked || rank_owned(owned(j))))
         sums[owner(j)].add(inflow(owned(j)));
     for (int j = 0; j < active.count(); ++j) sums[conditions].add(inflow(nodes(j)));
-    compensation->resize(conditions + 1);
-    for (int c = 0; c <= conditions; ++c) {
-      masses[c] = sums[c].hi;
-      (*compensation)[c] = sums[c].lo;
-    }
+    for (int c = 0; c <= conditions; ++c) masses[c] = sums[c].value();
     return masses;
   }
   for (int c = 0; c < conditions; ++c) {

@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 #include <type_traits>
+#include <vector>
 
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -32,10 +33,12 @@ void AveragingScratch::fitPoints(int points) {
 
 void AveragingScratch::compensate(bool on) {
   const int columns = static_cast<int>(node_sums.extent(1));
-  element_lo = Kokkos::View<Real**, MemSpace>("averaging_element_lo",
-                                              on ? element_sums.extent(0) : 0, columns);
-  node_lo =
-      Kokkos::View<Real**, MemSpace>("averaging_node_lo", on ? node_sums.extent(0) : 0, columns);
+  for (int k = 0; k < kLowParts; ++k) {
+    element_lo[k] = Kokkos::View<Real**, MemSpace>("averaging_element_lo",
+                                                   on ? element_sums.extent(0) : 0, columns);
+    node_lo[k] =
+        Kokkos::View<Real**, MemSpace>("averaging_node_lo", on ? node_sums.extent(0) : 0, columns);
+  }
 }
 
 namespace {
@@ -65,8 +68,8 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
   const auto weight_p = s.weight_p;
   const auto value_pc = s.value_pc;
   auto element_sums = s.element_sums, node_sums = s.node_sums;  // (contribute: not const)
-  const auto element_lo = kCompensated ? s.element_lo : s.element_sums;
-  const auto node_lo = kCompensated ? s.node_lo : s.node_sums;
+  const auto element_lo = s.element_lo;  // (empty and unused with plain sums)
+  const auto node_lo = s.node_lo;
   auto element_sv = KE::create_scatter_view(element_sums);
   auto node_sv = KE::create_scatter_view(node_sums);
   Kokkos::parallel_for(
@@ -163,17 +166,13 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
   // Several ranks: a node shared with another rank also has that rank's points in its sums.
   // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
   if (scratch.compensated()) {
-    if (exchange) exchange->sumCompensated({nodalField(node_sums)}, {nodalField(scratch.node_lo)});
+    if (exchange) {
+      std::vector<NodalFieldRef> lo;
+      for (int k = 0; k < kLowParts; ++k) lo.push_back(nodalField(scratch.node_lo[k]));
+      exchange->sumCompensated({nodalField(node_sums)}, lo);
+    }
     foldCompensatedSums(active, node_sums, scratch.node_lo);
-    const auto element_lo = scratch.element_lo;
-    Kokkos::parallel_for(
-        "averaging_fold_elements", Kokkos::RangePolicy<ExecSpace>(0, element_sums.extent(0)),
-        KOKKOS_LAMBDA(const int e) {
-          for (int k = 0; k < columns; ++k) {
-            element_sums(e, k) += element_lo(e, k);
-            element_lo(e, k) = 0;
-          }
-        });
+    foldCompensatedSums(element_sums, scratch.element_lo);
   } else if (exchange) {
     exchange->sum({nodalField(node_sums)});
   }

@@ -1,6 +1,7 @@
 #include "argine/physics/SideWallFriction.hpp"
 
 #include <Kokkos_ScatterView.hpp>
+#include <vector>
 
 #include "argine/boundary/SideWalls.hpp"
 #include "argine/parallel/NodalExchange.hpp"
@@ -23,7 +24,7 @@ constexpr int kStressZZ = 2;
 template <class Family, bool kCompensated>
 void mapResistanceImpl(const MaterialPoints& points, const PointShapes& shapes,
                        const SideWallParameters& walls, Kokkos::View<Real*, MemSpace> hi,
-                       Kokkos::View<Real*, MemSpace> lo) {
+                       const LowParts<Kokkos::View<Real*, MemSpace>>& lo) {
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto volume_p = points.volume;
@@ -53,7 +54,7 @@ void SideWallFriction::configure(const std::optional<SideWallParameters>& walls,
   walls_ = *walls;
   if (static_cast<int>(resistance_i_.extent(0)) != num_nodes) {
     resistance_i_ = Kokkos::View<Real*, MemSpace>("side_wall_resistance_i", num_nodes);
-    resistance_lo_ = Kokkos::View<Real*, MemSpace>("side_wall_resistance_lo", num_nodes);
+    resistance_lo_ = allocateLowParts(resistance_i_);
     stuck_i_ = Kokkos::View<unsigned char*, MemSpace>("side_wall_stuck_i", num_nodes);
   }
 }
@@ -63,19 +64,25 @@ void SideWallFriction::mapResistance(const MaterialPoints& points, const PointSh
                                      bool reproducible) {
   if (!active_) return;
   const auto nodes = active.nodes();
-  const auto hi = resistance_i_, lo = resistance_lo_;
+  const auto hi = resistance_i_;
+  const auto lo = resistance_lo_;
   Kokkos::parallel_for(
       "zero_side_wall_resistance", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j) { hi(nodes(j)) = lo(nodes(j)) = 0; });
+      KOKKOS_LAMBDA(const int j) {
+        hi(nodes(j)) = 0;
+        for (int k = 0; k < kLowParts; ++k) lo[k](nodes(j)) = 0;
+      });
   withShapeFamily(shapes, [&](auto family) {
     using Family = decltype(family);
     reproducible ? mapResistanceImpl<Family, true>(points, shapes, walls_, hi, lo)
                  : mapResistanceImpl<Family, false>(points, shapes, walls_, hi, lo);
   });
   if (exchange) {
-    if (reproducible)
-      exchange->sumCompensated({nodalField(hi)}, {nodalField(lo)});
-    else
+    if (reproducible) {
+      std::vector<NodalFieldRef> lo_refs;
+      for (int k = 0; k < kLowParts; ++k) lo_refs.push_back(nodalField(lo[k]));
+      exchange->sumCompensated({nodalField(hi)}, lo_refs);
+    } else
       exchange->sum({nodalField(hi)});
   }
   if (reproducible) foldCompensatedSums(active, resistance_i_, resistance_lo_);

@@ -4,44 +4,58 @@
 
 namespace argine {
 
+namespace {
+
+/// hi = the folded sum of the parts (hi, lo) of entry (i, c), lo = 0.
+template <class Hi, class Lo, class... Index>
+KOKKOS_INLINE_FUNCTION void foldAt(const Hi& hi, const Lo& lo, Index... index) {
+  Real parts[kSumParts];
+  parts[0] = hi(index...);
+  for (int k = 0; k < kLowParts; ++k) {
+    parts[k + 1] = lo[k](index...);
+    lo[k](index...) = 0;
+  }
+  hi(index...) = foldSum(parts);
+}
+
+}  // namespace
+
 void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real*, MemSpace> hi,
-                         Kokkos::View<Real*, MemSpace> lo) {
+                         const LowParts<Kokkos::View<Real*, MemSpace>>& lo) {
   const auto nodes = active.nodes();
   Kokkos::parallel_for(
       "fold_compensated_sums", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j) {
-        const int i = nodes(j);
-        hi(i) += lo(i);
-        lo(i) = 0;
-      });
+      KOKKOS_LAMBDA(const int j) { foldAt(hi, lo, nodes(j)); });
 }
 
 void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real* [kDim], MemSpace> hi,
-                         Kokkos::View<Real* [kDim], MemSpace> lo) {
+                         const LowParts<Kokkos::View<Real* [kDim], MemSpace>>& lo) {
   const auto nodes = active.nodes();
   Kokkos::parallel_for(
       "fold_compensated_sums", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
-        const int i = nodes(j);
-        for (int d = 0; d < kDim; ++d) {
-          hi(i, d) += lo(i, d);
-          lo(i, d) = 0;
-        }
+        for (int d = 0; d < kDim; ++d) foldAt(hi, lo, nodes(j), d);
       });
 }
 
 void foldCompensatedSums(const ActiveNodes& active, Kokkos::View<Real**, MemSpace> hi,
-                         Kokkos::View<Real**, MemSpace> lo) {
+                         const LowParts<Kokkos::View<Real**, MemSpace>>& lo) {
   const auto nodes = active.nodes();
   const int columns = static_cast<int>(hi.extent(1));
   Kokkos::parallel_for(
       "fold_compensated_sums", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
-        const int i = nodes(j);
-        for (int k = 0; k < columns; ++k) {
-          hi(i, k) += lo(i, k);
-          lo(i, k) = 0;
-        }
+        for (int k = 0; k < columns; ++k) foldAt(hi, lo, nodes(j), k);
+      });
+}
+
+void foldCompensatedSums(Kokkos::View<Real**, MemSpace> hi,
+                         const LowParts<Kokkos::View<Real**, MemSpace>>& lo) {
+  const int columns = static_cast<int>(hi.extent(1));
+  Kokkos::parallel_for(
+      "fold_compensated_rows", Kokkos::RangePolicy<ExecSpace>(0, hi.extent(0)),
+      KOKKOS_LAMBDA(const int e) {
+        for (int k = 0; k < columns; ++k) foldAt(hi, lo, e, k);
       });
 }
 

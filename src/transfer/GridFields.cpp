@@ -47,20 +47,24 @@ void GridFields::zero(const ActiveNodes& active) {
       });
 }
 
-void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& g, GridFields& lo) {
-  foldCompensatedSums(nodes, g.mass_solid_i, lo.mass_solid_i);
-  foldCompensatedSums(nodes, g.mass_liquid_i, lo.mass_liquid_i);
-  foldCompensatedSums(nodes, g.mass_liquid_intrinsic_i, lo.mass_liquid_intrinsic_i);
-  foldCompensatedSums(nodes, g.drag_i, lo.drag_i);
-  foldCompensatedSums(nodes, g.volume_liquid_i, lo.volume_liquid_i);
-  foldCompensatedSums(nodes, g.force_mixture_i, lo.force_mixture_i);
-  foldCompensatedSums(nodes, g.force_liquid_i, lo.force_liquid_i);
+void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& g,
+                             const LowParts<GridFields>& lo) {
+  using G = GridFields;
+  foldCompensatedSums(nodes, g.mass_solid_i, lowPartsOf(lo, &G::mass_solid_i));
+  foldCompensatedSums(nodes, g.mass_liquid_i, lowPartsOf(lo, &G::mass_liquid_i));
+  foldCompensatedSums(nodes, g.mass_liquid_intrinsic_i,
+                      lowPartsOf(lo, &G::mass_liquid_intrinsic_i));
+  foldCompensatedSums(nodes, g.drag_i, lowPartsOf(lo, &G::drag_i));
+  foldCompensatedSums(nodes, g.volume_liquid_i, lowPartsOf(lo, &G::volume_liquid_i));
+  foldCompensatedSums(nodes, g.force_mixture_i, lowPartsOf(lo, &G::force_mixture_i));
+  foldCompensatedSums(nodes, g.force_liquid_i, lowPartsOf(lo, &G::force_liquid_i));
   foldCompensatedMomenta(nodes, g, lo);
 }
 
-void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& g, GridFields& lo) {
-  foldCompensatedSums(nodes, g.momentum_solid_i, lo.momentum_solid_i);
-  foldCompensatedSums(nodes, g.momentum_liquid_i, lo.momentum_liquid_i);
+void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& g,
+                            const LowParts<GridFields>& lo) {
+  foldCompensatedSums(nodes, g.momentum_solid_i, lowPartsOf(lo, &GridFields::momentum_solid_i));
+  foldCompensatedSums(nodes, g.momentum_liquid_i, lowPartsOf(lo, &GridFields::momentum_liquid_i));
 }
 
 }  // namespace argine

@@ -141,35 +141,42 @@ struct PackedSums {
   }
 };
 
-/// ... or the GridFields sums `hi`, compensated with their low parts in `lo` (reproducible
-/// sums, CompensatedSum.hpp; Serial only, so plain references), slot by slot: the slots a
-/// point has a part in (all but the liquid ones for a dry point), in point order.
+/// ... or the GridFields sums `hi`, reproducible with their low parts in `lo` (binned sums,
+/// CompensatedSum.hpp; Serial only, so plain references), slot by slot: the slots a point
+/// has a part in (all but the liquid ones for a dry point), in point order.
 struct CompensatedSums {
-  GridFields hi, lo;
+  /// Per part (the sums' own fields, then each low part) and P2G slot: the value of node 0,
+  /// and the distance between nodes (the low parts are allocated as the sums).
+  Real* base[kSumParts][kSumSlotCount];
+  std::size_t node_stride[kSumSlotCount];
+
+  CompensatedSums(const GridFields& hi, const LowParts<GridFields>& lo) {
+    for (int k = 0; k < kSumParts; ++k) {
+      const GridFields& g = k == 0 ? hi : lo[k - 1];
+      base[k][kSumMassSolid] = g.mass_solid_i.data();
+      base[k][kSumMassLiquid] = g.mass_liquid_i.data();
+      base[k][kSumMassIntrinsic] = g.mass_liquid_intrinsic_i.data();
+      base[k][kSumDrag] = g.drag_i.data();
+      base[k][kSumVolumeLiquid] = g.volume_liquid_i.data();
+      for (int d = 0; d < kDim; ++d) {
+        base[k][kSumMomentumSolid + d] = &g.momentum_solid_i(0, d);
+        base[k][kSumMomentumLiquid + d] = &g.momentum_liquid_i(0, d);
+        base[k][kSumForceMixture + d] = &g.force_mixture_i(0, d);
+        base[k][kSumForceLiquid + d] = &g.force_liquid_i(0, d);
+      }
+    }
+    for (const int slot :
+         {kSumMassSolid, kSumMassLiquid, kSumMassIntrinsic, kSumDrag, kSumVolumeLiquid})
+      node_stride[slot] = hi.mass_solid_i.stride(0);
+    for (int d = 0; d < kDim; ++d)
+      for (const int slot :
+           {kSumMomentumSolid, kSumMomentumLiquid, kSumForceMixture, kSumForceLiquid})
+        node_stride[slot + d] = hi.momentum_solid_i.stride(0);
+  }
 
   KOKKOS_INLINE_FUNCTION void add(int i, int slot, Real v) const {
-    switch (slot) {
-      case kSumMassSolid:
-        return addCompensated(hi.mass_solid_i(i), lo.mass_solid_i(i), v);
-      case kSumMassLiquid:
-        return addCompensated(hi.mass_liquid_i(i), lo.mass_liquid_i(i), v);
-      case kSumMassIntrinsic:
-        return addCompensated(hi.mass_liquid_intrinsic_i(i), lo.mass_liquid_intrinsic_i(i), v);
-      case kSumDrag:
-        return addCompensated(hi.drag_i(i), lo.drag_i(i), v);
-      case kSumVolumeLiquid:
-        return addCompensated(hi.volume_liquid_i(i), lo.volume_liquid_i(i), v);
-    }
-    for (int d = 0; d < kDim; ++d) {
-      if (slot == kSumMomentumSolid + d)
-        return addCompensated(hi.momentum_solid_i(i, d), lo.momentum_solid_i(i, d), v);
-      if (slot == kSumMomentumLiquid + d)
-        return addCompensated(hi.momentum_liquid_i(i, d), lo.momentum_liquid_i(i, d), v);
-      if (slot == kSumForceMixture + d)
-        return addCompensated(hi.force_mixture_i(i, d), lo.force_mixture_i(i, d), v);
-      if (slot == kSumForceLiquid + d)
-        return addCompensated(hi.force_liquid_i(i, d), lo.force_liquid_i(i, d), v);
-    }
+    const std::size_t offset = i * node_stride[slot];
+    addToSumParts([&](int k) -> Real& { return base[k][slot][offset]; }, v);
   }
 
   template <int kNodes, class At, class T>
@@ -194,17 +201,17 @@ struct CompensatedSums {
 };
 
 /// Runs body(p, sums, r0, r1, n) for every point, with `sums` the packed rows of `records` or,
-/// with `compensation`, the compensated GridFields sums (grid, *compensation), and r0, r1, n
+/// with `compensation`, the reproducible GridFields sums (grid, *compensation), and r0, r1, n
 /// the body's totals, summed in point order (Serial); the packed sums are added to `grid` at
 /// the active nodes afterwards (all slots, or the momenta alone).
 template <class Body>
 KineticTotals scatterFromPoints(const char* name, int count, const Body& body,
                                 const ActiveNodes& active, NodeRecords& records, GridFields& grid,
-                                const GridFields* compensation, bool momenta_only) {
+                                const LowParts<GridFields>* compensation, bool momenta_only) {
   KineticTotals totals;
   const auto policy = Kokkos::RangePolicy<ExecSpace>(0, count);
   if (compensation) {
-    const CompensatedSums sums{grid, *compensation};
+    const CompensatedSums sums(grid, *compensation);
     Kokkos::parallel_reduce(
         name, policy,
         KOKKOS_LAMBDA(const int p, Real& r0, Real& r1, int& n) { body(p, sums, r0, r1, n); },
@@ -349,7 +356,8 @@ template <class Family, TransferScheme kScheme>
 void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes,
                          const LiquidCarrying& liquid_m, Real gravity,
                          const TransferSettings& transfer, const ActiveNodes& active,
-                         NodeRecords& records, GridFields& grid, const GridFields* compensation) {
+                         NodeRecords& records, GridFields& grid,
+                         const LowParts<GridFields>* compensation) {
   const P2GPointViews v{points.material,
                         points.volume,
                         points.mass_solid,
@@ -549,12 +557,10 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
 }
 
 template <class Family, TransferScheme kScheme>
-KineticTotals updateVelocitiesAndMapMomentaImpl(const PointShapes& shapes,
-                                                const LiquidCarrying& liquid_m,
-                                                const ActiveNodes& active, Real dt,
-                                                const TransferSettings& transfer,
-                                                MaterialPoints& points, NodeRecords& records,
-                                                GridFields& grid, const GridFields* compensation) {
+KineticTotals updateVelocitiesAndMapMomentaImpl(
+    const PointShapes& shapes, const LiquidCarrying& liquid_m, const ActiveNodes& active, Real dt,
+    const TransferSettings& transfer, MaterialPoints& points, NodeRecords& records,
+    GridFields& grid, const LowParts<GridFields>* compensation) {
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
@@ -772,7 +778,7 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
                      const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
                      const ActiveNodes& active, NodeRecords& records, GridFields& grid,
-                     const GridFields* compensation) {
+                     const LowParts<GridFields>* compensation) {
   withFamilyAndScheme(shapes, transfer, [&](auto family, auto scheme) {
     mapPointsToGridImpl<decltype(family), decltype(scheme)::value>(
         points, shapes, liquid_m, gravity, transfer, active, records, grid, compensation);
@@ -815,12 +821,10 @@ void advanceNodalVelocities(const ActiveNodes& active, Real dt, GridFields& grid
       });
 }
 
-KineticTotals updatePointVelocitiesAndMapMomenta(const PointShapes& shapes,
-                                                 const LiquidCarrying& liquid_m,
-                                                 const ActiveNodes& active, Real dt,
-                                                 const TransferSettings& transfer,
-                                                 MaterialPoints& points, NodeRecords& records,
-                                                 GridFields& grid, const GridFields* compensation) {
+KineticTotals updatePointVelocitiesAndMapMomenta(
+    const PointShapes& shapes, const LiquidCarrying& liquid_m, const ActiveNodes& active, Real dt,
+    const TransferSettings& transfer, MaterialPoints& points, NodeRecords& records,
+    GridFields& grid, const LowParts<GridFields>* compensation) {
   records.allocate(grid.numNodes());
   const auto nodes = active.nodes();
   const auto momentum_solid_i = grid.momentum_solid_i;

@@ -119,22 +119,27 @@ TEST(RankDecomposition, GridFamiliesShareEveryNodeBothRanksPointsReach) {
 }
 
 TEST(RankDecomposition, CompensatedSumsAtSharedNodesKeepWhatPlainSumsLose) {
-  // Each rank holds the compensated pair (hi, lo) of its partial sum at the shared nodes:
+  // Each rank holds the reproducible (binned) sum of its partial terms at the shared nodes:
   // rank r adds 1e16 (r even) or -1e16 (r odd) and then 1 + r. The exact total is
   // sum (1 + r) (+ 1e16 if the count of ranks touching the node is odd); plain partial sums
-  // have lost the small terms already, the compensated exchange keeps them.
+  // have lost the small terms already, the merged binned sums keep them.
   const Mesh mesh = test::rectangleMesh(8, 2, 8.0, 2.0, ElementType::Quad4);
   const RankDecomposition ranks(MPI_COMM_WORLD, mesh, std::vector<Real>(mesh.numElements(), 1));
   const std::vector<std::vector<int>> touching = ranksTouchingNodes(mesh, ranks);
-  Kokkos::View<Real*, MemSpace> hi("hi", mesh.numNodes()), lo("lo", mesh.numNodes());
+  Kokkos::View<Real*, MemSpace> hi("hi", mesh.numNodes());
+  const auto lo = allocateLowParts(hi);
   const int me = ranks.rank();
   for (int i = 0; i < mesh.numNodes(); ++i)
     if (std::find(touching[i].begin(), touching[i].end(), me) != touching[i].end()) {
-      addCompensated(hi(i), lo(i), me % 2 == 0 ? 1e16 : -1e16);
-      addCompensated(hi(i), lo(i), 1.0 + me);
+      Real* parts[kSumParts];
+      partsAt(hi, lo, i, parts);
+      addToSum(parts, me % 2 == 0 ? 1e16 : -1e16);
+      addToSum(parts, 1.0 + me);
     }
   NodalExchange exchange(ranks);
-  exchange.sumCompensated({nodalField(hi)}, {nodalField(lo)});
+  std::vector<NodalFieldRef> lo_refs;
+  for (int k = 0; k < kLowParts; ++k) lo_refs.push_back(nodalField(lo[k]));
+  exchange.sumCompensated({nodalField(hi)}, lo_refs);
   for (int i = 0; i < mesh.numNodes(); ++i) {
     if (std::find(touching[i].begin(), touching[i].end(), me) == touching[i].end()) continue;
     std::vector<int> around = touching[i];
@@ -144,7 +149,9 @@ TEST(RankDecomposition, CompensatedSumsAtSharedNodesKeepWhatPlainSumsLose) {
       big += r % 2 == 0 ? 1e16 : -1e16;
       small += 1.0 + r;
     }
-    EXPECT_EQ(hi(i) + lo(i), big + small) << "node " << i;  // exact in doubles here
+    Real parts[kSumParts] = {hi(i)};
+    for (int k = 0; k < kLowParts; ++k) parts[k + 1] = lo[k](i);
+    EXPECT_EQ(foldSum(parts), big + small) << "node " << i;  // exact in doubles here
   }
 }
 

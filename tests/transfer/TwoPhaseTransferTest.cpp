@@ -394,8 +394,13 @@ TEST_P(TransferOnShape, CompensatedP2GDoesNotDependOnThePointOrder) {
   // Reproducible sums: the P2G of the points in reverse order gives the same nodal sums bit
   // for bit once folded, and the plain P2G's to round-off.
   auto [mesh, points, shapes, grid] = randomScene(3, 4, 1.5, 2.0, GetParam(), 11);
-  GridFields lo, reversed_grid, reversed_lo, plain;
-  for (GridFields* g : {&lo, &reversed_grid, &reversed_lo, &plain}) g->allocate(mesh.numNodes());
+  GridFields reversed_grid, plain;
+  LowParts<GridFields> lo, reversed_lo;
+  for (GridFields* g : {&reversed_grid, &plain}) g->allocate(mesh.numNodes());
+  for (int k = 0; k < kLowParts; ++k) {
+    lo[k].allocate(mesh.numNodes());
+    reversed_lo[k].allocate(mesh.numNodes());
+  }
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
   NodeRecords records;
@@ -466,7 +471,8 @@ MaterialPoints rearranged(const MaterialPoints& points, const std::vector<int>& 
 struct TransferRun {
   MaterialPoints points;
   PointShapes shapes;
-  GridFields grid, lo;
+  GridFields grid;
+  LowParts<GridFields> lo;
   PointRates rates;
 };
 
@@ -475,12 +481,13 @@ struct TransferRun {
 /// randomiseGrid), with compensated sums or the packed ones.
 void runTransfers(const Mesh& mesh, TransferRun& r, bool compensated) {
   r.grid.allocate(mesh.numNodes());
-  r.lo.allocate(mesh.numNodes());
+  for (int k = 0; k < kLowParts; ++k) r.lo[k].allocate(mesh.numNodes());
   const ActiveNodes active = activeNodesOf(mesh, r.points);
   NodeRecords records;
-  const GridFields* compensation = compensated ? &r.lo : nullptr;
+  const LowParts<GridFields>* compensation = compensated ? &r.lo : nullptr;
   mapPointsToGrid(r.points, r.shapes, liquidFlags(), 9.81, TransferSettings{}, active, records,
                   r.grid, compensation);
+  if (compensated) foldCompensatedGridSums(active, r.grid, r.lo);  // the remap needs lo = 0
   randomiseGrid(r.grid, mesh.numNodes(), 5);
   updatePointVelocitiesAndMapMomenta(r.shapes, liquidFlags(), active, 1e-3,
                                      TransferSettings{TransferScheme::Flip, {0.25, 0.5}, {}},

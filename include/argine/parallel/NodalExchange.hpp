@@ -65,17 +65,17 @@ class NodalExchange {
   void sum(std::initializer_list<NodalFieldRef> fields);
   /// Same for the fields of a vector.
   void sum(const std::vector<NodalFieldRef>& fields);
-  /// Compensated sums (transfer/CompensatedSum.hpp): field k of `hi` with its low part, field
-  /// k of `lo` (same shape). Each rank's (hi, lo) is added in ascending rank order with
-  /// TwoSum; both parts are replaced. Fold them (hi + lo) afterwards. Collective.
-  void sumCompensated(std::initializer_list<NodalFieldRef> hi,
-                      std::initializer_list<NodalFieldRef> lo);
+  /// Reproducible sums (transfer/CompensatedSum.hpp): field f of `hi` (part 0 of its sums)
+  /// with its low parts, fields f, f + n, ..., f + (kLowParts - 1) n of `lo` (n = hi.size();
+  /// same shapes: the low parts part after part). Each rank's sum is merged in ascending rank
+  /// order (addSumToSum); all parts are replaced. Fold them afterwards. Collective.
+  void sumCompensated(const std::vector<NodalFieldRef>& hi, const std::vector<NodalFieldRef>& lo);
 
   const ExchangeTraffic& traffic() const { return traffic_; }
 
  private:
   /// Sends and receives `fields` at the shared nodes and adds the partial values; the first
-  /// `compensated_width` values per node are compensated pairs' high parts (see above).
+  /// `compensated_width` values per node are reproducible sums' part 0 (see above).
   void exchange(const std::vector<NodalFieldRef>& fields, int compensated_width);
 
   const RankDecomposition& decomposition_;

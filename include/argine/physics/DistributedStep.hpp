@@ -21,6 +21,7 @@
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/TimeStepControl.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -32,17 +33,17 @@ struct PointTotals;
 
 /// Completes the P2G of mapPointsToGrid at the shared nodes: masses, drag, liquid volume,
 /// momenta and forces, in one message per neighbour.
-/// With `compensation` (reproducible sums) the compensated pairs (grid, compensation) are
-/// added (NodalExchange::sumCompensated); they still need folding.
+/// With `compensation` (reproducible sums) the binned sums (grid, compensation) are merged
+/// (NodalExchange::sumCompensated); they still need folding.
 void sumGridAtSharedNodes(NodalExchange& exchange, GridFields& grid,
-                          GridFields* compensation = nullptr);
+                          LowParts<GridFields>* compensation = nullptr);
 /// Completes the remapped momenta (updatePointVelocitiesAndMapMomenta) at the shared nodes.
 void sumMomentaAtSharedNodes(NodalExchange& exchange, GridFields& grid,
-                             GridFields* compensation = nullptr);
+                             LowParts<GridFields>* compensation = nullptr);
 /// Completes mapBoundaryGradients at the shared nodes (mass gradient, flux weights, wet
 /// volume).
 void sumBoundaryGradientsAtSharedNodes(NodalExchange& exchange, BoundaryGradientFields& fields,
-                                       BoundaryGradientFields* compensation = nullptr);
+                                       LowParts<BoundaryGradientFields>* compensation = nullptr);
 
 /// Everything the end of a step sums over the ranks, in ONE Allreduce: the point totals of
 /// the state update, the kinetic totals of the velocity update, and the relocation counts
@@ -67,11 +68,10 @@ struct TimeStepCandidate {
 /// never shrunk: no allocation per step).
 void sumOverRanks(MPI_Comm comm, EndOfStepSums& sums, std::vector<Real>& also,
                   TimeStepCandidate* next, std::vector<Real>& scratch);
-/// Reproducible sums: entry k of every rank's compensated value (hi[k], lo[k]) added in rank
-/// order with TwoSum (transfer/CompensatedSum.hpp) and rounded once, into hi[k] on every
-/// rank (lo unchanged). Collective (one Allgather of both vectors, through `scratch`: grown,
-/// never shrunk).
-void sumCompensatedOverRanks(MPI_Comm comm, std::vector<Real>& hi, const std::vector<Real>& lo,
+/// Reproducible sums: entry k of every rank's `sums` merged in rank order (exact, binned:
+/// transfer/CompensatedSum.hpp), into sums[k] on every rank (fold with value()). Collective
+/// (one Allgather of all parts, through `scratch`: grown, never shrunk).
+void sumCompensatedOverRanks(MPI_Comm comm, std::vector<CompensatedReal>& sums,
                              std::vector<Real>& scratch);
 /// Element-wise sum of `values` over the ranks (in place).
 void sumOverRanks(MPI_Comm comm, std::vector<Real>& values);

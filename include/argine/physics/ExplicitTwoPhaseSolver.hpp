@@ -199,7 +199,7 @@ class ExplicitTwoPhaseSolver {
   /// Reproducible sums (deck `Parallel: {Reproducible Sums: true}`, transfer/CompensatedSum.hpp):
   /// every node sum that feeds the state (P2G, momentum remap, hydraulic boundary gradients,
   /// volumetric averaging, head stabilisation) and the run totals (energies, liquid mass,
-  /// boundary fluxes) are compensated and rounded once complete, so the results do not
+  /// boundary fluxes) are binned and rounded once complete, so the results do not
   /// depend on the number of MPI ranks or on the order of the points (except with a
   /// probability of order 1e-14 per sum; the outflow limit keeps plain sums). Costs about
   /// 2x in those kernels. Off by default.
@@ -294,15 +294,17 @@ class ExplicitTwoPhaseSolver {
   GridFields grid_;
   NodeRecords node_records_;  ///< scratch of the transfer kernels (packed nodal rows)
   bool reproducible_sums_ = false;
-  GridFields grid_lo_;                  ///< reproducible sums: low parts of grid_'s sums
-  BoundaryGradientFields boundary_lo_;  ///< ... and of boundary_fields_'
-  const GridFields* gridCompensation() const { return reproducible_sums_ ? &grid_lo_ : nullptr; }
-  // Reproducible sums: this rank's run totals as compensated pairs, combined over the ranks
-  // at the end of the step (sumCompensatedOverRanks).
+  LowParts<GridFields> grid_lo_;                  ///< reproducible sums: low parts of grid_'s
+  LowParts<BoundaryGradientFields> boundary_lo_;  ///< ... and of boundary_fields_' sums
+  const LowParts<GridFields>* gridCompensation() const {
+    return reproducible_sums_ ? &grid_lo_ : nullptr;
+  }
+  // Reproducible sums: this rank's run totals as binned sums, merged over the ranks at the
+  // end of the step (sumCompensatedOverRanks).
   CompensatedKinetic kinetic_pairs_;
   CompensatedReal liquid_mass_pair_;
-  std::vector<Real> flux_mass_hi_, flux_mass_lo_;  ///< per hydraulic condition, then the total
-  std::vector<Real> totals_hi_, totals_lo_;        ///< the pairs sent at the end of a step
+  std::vector<CompensatedReal> flux_mass_sums_;  ///< per hydraulic condition, then the total
+  std::vector<CompensatedReal> totals_sums_;     ///< the sums merged at the end of a step
   ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
   bool nodes_next_changed_ = true;  ///< nodes_next_ differs from nodes_in_use_ (else unused)

@@ -41,6 +41,7 @@
 
 #include "argine/boundary/HydraulicConditions.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -60,10 +61,10 @@ struct BoundaryGradientFields {
   void zero(const ActiveNodes& nodes);
 };
 
-/// Reproducible sums: mapBoundaryGradients' compensated sums, complete over the ranks,
-/// folded with their low parts at the listed nodes (transfer/CompensatedSum.hpp).
+/// Reproducible sums: mapBoundaryGradients' binned sums, complete over the ranks, folded
+/// with their low parts at the listed nodes (transfer/CompensatedSum.hpp).
 void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientFields& fields,
-                                 BoundaryGradientFields& lo);
+                                 const LowParts<BoundaryGradientFields>& lo);
 
 /// The outward unit normal of a node from its mass gradient (4.51); zero when the gradient
 /// vanishes. Note the sign: sum_p m_p grad N_i(x_p) points OUT of the body at a boundary
@@ -78,12 +79,12 @@ KOKKOS_INLINE_FUNCTION void outwardNormalOfMassGradient(const Real gradient[kDim
 
 /// P2G at t^k of the mass gradient, wet volume and flux weights; `grid` must hold the nodal
 /// liquid content of t^k (computeNodalVelocities). Zero `fields` on the active nodes first.
-/// With `compensation` (reproducible sums) compensated, as mapPointsToGrid.
+/// With `compensation` (reproducible sums) binned, as mapPointsToGrid.
 void mapBoundaryGradients(const MaterialPoints& points, const PointShapes& shapes,
                           const Kokkos::View<const PointMaterial*, MemSpace>& materials_m,
                           const Kokkos::View<const int*, MemSpace>& liquid_m,
                           const GridFields& grid, BoundaryGradientFields& fields,
-                          const BoundaryGradientFields* compensation = nullptr);
+                          const LowParts<BoundaryGradientFields>* compensation = nullptr);
 
 /// Adds the loads to f^ext and f_L^ext of the nodes that carry solid mass.
 void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);
@@ -113,13 +114,13 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 /// is the same sum over ALL active nodes (= the change of the points' liquid mass).
 /// `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the condition sums then
 /// count only those (each node on one rank), as `active` does for the total. Empty: all.
-/// With `compensation` (reproducible sums) each entry is a compensated sum: its high part
-/// returned, its low part in (*compensation)[entry].
+/// With `compensation` (reproducible sums) each entry is a reproducible sum, in
+/// (*compensation)[entry], and its value is returned.
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned = {},
-                                     std::vector<Real>* compensation = nullptr);
+                                     std::vector<CompensatedReal>* compensation = nullptr);
 
 }  // namespace argine

@@ -16,6 +16,7 @@
 /// sums are the ones a call of its own would form, so the results are the same to the bit).
 
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -43,7 +44,7 @@ struct AveragingScratch {
   Kokkos::View<Real**, MemSpace> node_sums;
   /// Reproducible sums (transfer/CompensatedSum.hpp): the low parts of both sums, shaped as
   /// they are; empty: plain sums.
-  Kokkos::View<Real**, MemSpace> element_lo, node_lo;
+  LowParts<Kokkos::View<Real**, MemSpace>> element_lo, node_lo;
 
   /// Sums of `channels` quantities over `elements` elements (0 when only nodal averaging is
   /// used) and `nodes` nodes.
@@ -53,7 +54,7 @@ struct AveragingScratch {
   /// Allocates (on) or empties (off) the low parts.
   void compensate(bool on);
   int channels() const { return static_cast<int>(node_sums.extent(1)) / 2; }
-  bool compensated() const { return node_lo.extent(0) > 0; }
+  bool compensated() const { return node_lo[0].extent(0) > 0; }
 };
 
 /// Replaces value_pc(p, c) by its element or nodal average (file comment of the header) at

@@ -19,6 +19,7 @@
 
 #include "argine/boundary/SideWalls.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -37,7 +38,7 @@ class SideWallFriction {
   bool active() const { return active_; }
 
   /// Step 1 on the nodes `active` (zeroed there first); with `exchange` the sums are
-  /// completed at shared nodes, compensated when `reproducible` (same bits on any number of
+  /// completed at shared nodes, binned when `reproducible` (same bits on any number of
   /// ranks).
   void mapResistance(const MaterialPoints& points, const PointShapes& shapes,
                      const ActiveNodes& active, NodalExchange* exchange, bool reproducible);
@@ -57,7 +58,7 @@ class SideWallFriction {
   bool active_ = false;
   SideWallParameters walls_;
   Kokkos::View<Real*, MemSpace> resistance_i_;
-  Kokkos::View<Real*, MemSpace> resistance_lo_;  ///< low parts of the compensated sums
+  LowParts<Kokkos::View<Real*, MemSpace>> resistance_lo_;  ///< low parts of the binned sums
   Kokkos::View<unsigned char*, MemSpace> stuck_i_;
 };
 

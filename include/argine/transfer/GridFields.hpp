@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -55,8 +56,10 @@ struct GridFields {
 /// Reproducible sums (CompensatedSum.hpp): the P2G sums of mapPointsToGrid (masses, drag,
 /// liquid volume, momenta, forces), complete over the ranks, folded with their low parts
 /// `lo` at the listed nodes (lo = 0 after).
-void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& grid, GridFields& lo);
+void foldCompensatedGridSums(const ActiveNodes& nodes, GridFields& grid,
+                             const LowParts<GridFields>& lo);
 /// The same for the momenta alone (the remap of updatePointVelocitiesAndMapMomenta).
-void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& grid, GridFields& lo);
+void foldCompensatedMomenta(const ActiveNodes& nodes, GridFields& grid,
+                            const LowParts<GridFields>& lo);
 
 }  // namespace argine

@@ -16,6 +16,7 @@
 /// stress (4.5, chi = S_L): sigma = sigma' - S_L p_L m.
 
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 #include "argine/transfer/TransferScheme.hpp"
 
 namespace argine {
@@ -36,13 +37,13 @@ using LiquidCarrying = Kokkos::View<const int*, MemSpace>;
 /// g = 9.81 m/s^2, the g that defines k), momenta, internal forces (4.43, 4.44) and gravity
 /// (4.41, 4.42; `gravity` in m/s^2 acting in -y). Boundary loads are added afterwards by the
 /// boundary conditions. The grid must be zero on the nodes the points touch. With
-/// `compensation` (reproducible sums, CompensatedSum.hpp) the sums are compensated, their low
+/// `compensation` (reproducible sums, CompensatedSum.hpp) the sums are binned, their low
 /// parts in the same fields of `compensation` (zero there too), to be folded once complete.
 /// With APIC (`transfer`) the momenta are sum N m (v_p + C_p (x_i - x_p)).
 void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
                      const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
                      const ActiveNodes& active, NodeRecords& records, GridFields& grid,
-                     const GridFields* compensation = nullptr);
+                     const LowParts<GridFields>* compensation = nullptr);
 
 /// Nodal velocities v = momentum / mass and the nodal liquid content rho_L n S_L =
 /// M_L / (sum N V) (4.16) on the active nodes. A node without liquid mass gets v_L = v_S.
@@ -69,14 +70,14 @@ struct KineticTotals {
 /// (grad N_i)^T of each phase, v~_i the grid velocities of advanceNodalVelocities (in the
 /// velocity slots of GridFields, conditions imposed). Then the P2G of the updated momenta
 /// sum N M_S v_S and sum N rho_L V v_L (APIC: with C_p (x_i - x_p) added to v_p) into the
-/// (first zeroed) nodal momenta of the active nodes (compensated as mapPointsToGrid with
+/// (first zeroed) nodal momenta of the active nodes (binned as mapPointsToGrid with
 /// `compensation`, whose momenta must be zero on the active nodes). Call
-/// computeNodalVelocities next (after folding, when compensated).
+/// computeNodalVelocities next (after folding, when binned).
 /// Returns the kinetic energies of the new velocities.
 KineticTotals updatePointVelocitiesAndMapMomenta(
     const PointShapes& shapes, const LiquidCarrying& liquid_m, const ActiveNodes& active, Real dt,
     const TransferSettings& transfer, MaterialPoints& points, NodeRecords& records,
-    GridFields& grid, const GridFields* compensation = nullptr);
+    GridFields& grid, const LowParts<GridFields>* compensation = nullptr);
 
 /// G2P of the nodal velocities (Sec. 3.3 step 4): strain increment dt sym(grad v_S) (2.17),
 /// spin increment dt skew(grad v_S) (the Jaumann rotation, ObjectiveStressRate.hpp),
