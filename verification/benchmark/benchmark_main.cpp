@@ -17,7 +17,7 @@
 /// solver's recommended interval). --update-interval: recompute the critical time step every
 /// N steps (the deck's Time Step/Update Interval; default 1 as in the deck). --shuffle:
 /// permute the points randomly first (points mixed by large deformations).
-/// --reproducible-sums: the compensated node sums of `Parallel: {Reproducible Sums: true}`
+/// --reproducible-sums: the binned node sums of `Parallel: {Reproducible Sums: true}`
 /// (what they cost). The closing
 /// fingerprint of each scene (a hash of all point fields in id order) tells whether two
 /// builds give bit-for-bit the same results; --dump PREFIX writes the final point states
