@@ -2,7 +2,8 @@
 # Builds argine's libFuzzer targets (Clang, ASan + UBSan, in build-fuzz/) and runs them.
 #   scripts/fuzz.sh [SECONDS [TARGET...]]   run each target SECONDS (default 120) on its corpus
 #   scripts/fuzz.sh build                  only build
-# TARGET: deck (fuzz_deck_reader) or exodus (fuzz_exodus_reader); default both.
+# TARGET: deck (fuzz_deck_reader), exodus (fuzz_exodus_reader) or gmsh (fuzz_gmsh_reader);
+# default all three.
 # A crash, hang (an input taking over 10 s), out-of-memory, leak, uncaught exception or
 # sanitizer report stops the fuzzer with exit code != 0 and leaves the input in
 # build-fuzz/artifacts/<target>/ (reproduce: build-fuzz/fuzz/fuzz_<target>_reader FILE).
@@ -21,7 +22,7 @@ build() {
   cmake -S "$root" -B "$build_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DARGINE_FUZZ=ON -DARGINE_BUILD_TESTS=OFF \
     -DARGINE_WERROR=ON "${launcher[@]}" >/dev/null
-  cmake --build "$build_dir" -j "$jobs" --target fuzz_deck_reader fuzz_exodus_reader
+  cmake --build "$build_dir" -j "$jobs" --target fuzz_deck_reader fuzz_exodus_reader fuzz_gmsh_reader
 }
 
 run() {  # run TARGET SECONDS
@@ -53,11 +54,11 @@ fi
 seconds=${1:-120}
 shift || true
 targets=("$@")
-((${#targets[@]} == 0)) && targets=(deck exodus)
+((${#targets[@]} == 0)) && targets=(deck exodus gmsh)
 [[ -x "$build_dir/fuzz/fuzz_deck_reader" && ${ARGINE_FUZZ_SKIP_BUILD:-0} == 1 ]] || build
 for target in "${targets[@]}"; do
   case "$target" in
-    deck | exodus) run "$target" "$seconds" ;;
-    *) echo "usage: scripts/fuzz.sh [build | SECONDS [deck|exodus]...]" >&2; exit 2 ;;
+    deck | exodus | gmsh) run "$target" "$seconds" ;;
+    *) echo "usage: scripts/fuzz.sh [build | SECONDS [deck|exodus|gmsh]...]" >&2; exit 2 ;;
   esac
 done

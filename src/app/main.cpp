@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -15,7 +16,9 @@
 #include "argine/core/Version.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/input/DeckSchema.hpp"
+#include "argine/mesh/MeshGeometry.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
+#include "argine/meshio/GmshMesh.hpp"
 #include "argine/meshio/MeshGenerators.hpp"
 #include "argine/simulation/Setup.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -31,7 +34,8 @@ commands:
                                            --restart continues from a checkpoint written
                                            by a run of the same deck (Output/Checkpoint)
   check DECK.yaml                          validate the deck and its mesh, run nothing
-  mesh DECK.yaml -o MESH.exo               write the mesh of the deck's Mesh/Generate section
+  mesh DECK.yaml -o MESH.exo               write the mesh of the deck's Mesh section as Exodus
+  mesh MESH.msh|MESH.geo -o MESH.exo       convert a gmsh mesh (or mesh a .geo) to Exodus
   schema                                   print the deck reference (Markdown)
   --help                                   this text
   --version                                the version
@@ -99,10 +103,21 @@ int runCommand(const std::string& command, const Arguments& arguments) {
   }
   if (command == "mesh") {
     if (arguments.mesh_output.empty()) throw std::invalid_argument("mesh needs -o MESH.exo");
-    const argine::MeshSpec spec = argine::readMeshSpec(deckArgument(arguments, "mesh"));
-    if (!spec.generate)
-      throw argine::InputError("Mesh/Generate", "argine mesh needs a Mesh/Generate section");
-    const argine::Mesh mesh = argine::generateMesh(spec.generator);
+    // A gmsh file is converted as it is; a deck's mesh (any source) is written as the run
+    // would read it, checked as `check` would.
+    const std::string input = deckArgument(arguments, "mesh");
+    const std::string extension = std::filesystem::path(input).extension().string();
+    const bool gmsh = extension == ".msh" || extension == ".geo";
+    argine::Mesh mesh;
+    std::string source = input;
+    if (gmsh) {
+      mesh = argine::loadGmshMesh(input);
+    } else {
+      const argine::MeshSpec spec = argine::readMeshSpec(input);
+      mesh = argine::readDeckMesh(spec);
+      source = argine::meshSource(spec);
+    }
+    argine::checkMeshQuality(mesh, source);
     argine::writeExodusMesh(arguments.mesh_output, mesh);
     std::printf("wrote %s (%d nodes, %d %s elements)\n", arguments.mesh_output.c_str(),
                 mesh.numNodes(), mesh.numElements(), argine::exodusName(mesh.type));

@@ -75,7 +75,7 @@ void checkMeshSpec(const MeshSpec& mesh) {
                      std::string(deckWord(kShapeFamilyWords, mesh.shape_functions)) +
                          " shape functions need a structured Quad4 grid (Mesh/Generate with "
                          "Type: rectangle and Element: quad4); use linear with " +
-                         (mesh.generate ? "this generator" : "an Exodus mesh"));
+                         (mesh.generate ? "this generator" : "a mesh from a file"));
   if (!mesh.generate) return;
   const GeneratorSpec& generator = mesh.generator;
   const char* axes[] = {"x", "y"};

@@ -59,8 +59,14 @@ ListSchema generatorKeys() {
 ListSchema meshKeys() {
   ListSchema mesh;
   mesh.add(KeySpec::file("Exodus File", "Exodus II background mesh (relative to the deck)"));
+  mesh.add(KeySpec::file("Gmsh File",
+                         "gmsh mesh (relative to the deck): an .msh file (MSH 4.1, ASCII or "
+                         "binary) of 3-node triangles or 4-node quadrangles in the xy plane, or "
+                         "a .geo file meshed by the gmsh program (apt-get install gmsh); "
+                         "physical surfaces become element blocks, physical curves side sets "
+                         "and node sets, physical points node sets, each named as in gmsh"));
   mesh.add(KeySpec::sublist("Generate", generatorKeys(), "built-in mesh generator"));
-  mesh.exactlyOneOf({"Exodus File", "Generate"});
+  mesh.exactlyOneOf({"Exodus File", "Gmsh File", "Generate"});
   mesh.add(KeySpec::choice("Shape Functions", deckWords(kShapeFamilyWords),
                            "shape functions of the particle-grid transfers: linear (the "
                            "element's own, the thesis), uGIMP or quadratic B-spline (both "

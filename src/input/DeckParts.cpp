@@ -359,6 +359,10 @@ MeshSpec parseMesh(const DeckSection& mesh) {
     spec.exodus_file = mesh.file("Exodus File");
     return spec;
   }
+  if (mesh.has("Gmsh File")) {
+    spec.gmsh_file = mesh.file("Gmsh File");
+    return spec;
+  }
   spec.generate = true;
   const DeckSection generate = mesh.section("Generate");
   GeneratorSpec& generator = spec.generator;

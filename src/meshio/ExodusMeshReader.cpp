@@ -1,7 +1,7 @@
 /// @file ExodusMeshReader.cpp
 /// Reads a 2D Exodus II mesh into a Mesh with the generic calls only, and checks it:
-/// one element type, node numbers in range, every element counter-clockwise (clockwise
-/// ones are reordered), no zero-area or non-convex elements.
+/// one element type, node numbers in range; the elements' orientation and shape are checked
+/// by assembleMesh (MeshAssembly.hpp), as for every reader.
 #include <exodusII.h>
 
 #include <algorithm>
@@ -17,7 +17,7 @@
 #include "argine/core/Error.hpp"
 #include "argine/meshio/ExodusLayoutCheck.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
-#include "argine/meshio/Geometry2D.hpp"
+#include "argine/meshio/MeshAssembly.hpp"
 #include "argine/meshio/NetcdfHeaderCheck.hpp"
 
 namespace argine {
@@ -231,63 +231,16 @@ Mesh readExodusMesh(const std::string& path) {
     throw InputError(path, "the element blocks hold " + std::to_string(total) +
                                " elements but the header says " + std::to_string(num_elements));
 
-  Mesh mesh;
-  mesh.type = first_typed->type;
+  std::vector<RawElementBlock> blocks;
+  for (const auto& block : raw) {
+    RawElementBlock assembled{block.name, block.id, block.connectivity};
+    for (int& node : assembled.connectivity) --node;  // 1-based in the file
+    blocks.push_back(std::move(assembled));
+  }
+  AssembledMesh assembled = assembleMesh(path, first_typed->type, x, y, blocks);
+  Mesh& mesh = assembled.mesh;
+  const std::vector<char>& flipped = assembled.flipped;
   const int nv = mesh.nodesPerElement();
-  mesh.coordinates = Kokkos::View<Real* [kDim], MemSpace>("mesh coordinates", num_nodes);
-  mesh.connectivity = Kokkos::View<int**, MemSpace>("mesh connectivity", num_elements, nv);
-  mesh.element_block = Kokkos::View<int*, MemSpace>("mesh element block", num_elements);
-  auto coordinates = Kokkos::create_mirror_view(mesh.coordinates);
-  auto connectivity = Kokkos::create_mirror_view(mesh.connectivity);
-  auto element_block = Kokkos::create_mirror_view(mesh.element_block);
-  for (int n = 0; n < num_nodes; ++n) {
-    coordinates(n, 0) = x[n];
-    coordinates(n, 1) = y[n];
-  }
-
-  // Connectivity, made counter-clockwise; flipped[e] remembers reordered elements.
-  std::vector<char> flipped(num_elements, 0);
-  int e = 0;
-  for (std::size_t b = 0; b < raw.size(); ++b) {
-    ElementBlock block;
-    block.name = raw[b].name;
-    block.id = raw[b].id;
-    for (int i = 0; i < raw[b].count; ++i, ++e) {
-      std::vector<Point2> corners(nv);
-      Real longest = 0;
-      for (int k = 0; k < nv; ++k) {
-        const int node = raw[b].connectivity[static_cast<std::size_t>(i) * nv + k] - 1;
-        connectivity(e, k) = node;
-        corners[k] = {x[node], y[node]};
-      }
-      for (int k = 0; k < nv; ++k) {
-        const Point2& p = corners[k];
-        const Point2& q = corners[(k + 1) % nv];
-        longest = std::max(longest, std::hypot(q[0] - p[0], q[1] - p[1]));
-      }
-      const Real area = signedArea(corners);
-      const Real tolerance = 1e-12 * longest * longest;
-      const std::string which = "element " + std::to_string(e + 1) + " (block " + block.name + ")";
-      if (!(std::abs(area) > tolerance))
-        throw InputError(path, which + " has zero area (degenerate element)");
-      if (area < 0) {
-        // Reverse the node order: new local node k = old local node (nv - k) % nv.
-        flipped[e] = 1;
-        std::vector<int> old(nv);
-        for (int k = 0; k < nv; ++k) old[k] = connectivity(e, k);
-        for (int k = 0; k < nv; ++k) connectivity(e, k) = old[(nv - k) % nv];
-        std::reverse(corners.begin() + 1, corners.end());
-      }
-      // A reflex corner makes the bilinear map of a quad fold over (negative Jacobian).
-      for (int k = 0; nv == 4 && k < nv; ++k)
-        if (orientation(corners[(k + nv - 1) % nv], corners[k], corners[(k + 1) % nv]) < -tolerance)
-          throw InputError(path, which + " is not convex (reflex corner at node " +
-                                     std::to_string(connectivity(e, k) + 1) + ")");
-      element_block(e) = static_cast<int>(b);
-      block.elements.push_back(e);
-    }
-    mesh.blocks.push_back(std::move(block));
-  }
 
   // Node sets.
   const std::vector<int> node_set_ids = reader.ids(EX_NODE_SET, init.num_node_sets);
@@ -343,15 +296,12 @@ Mesh readExodusMesh(const std::string& path) {
                                    std::to_string(num_elements) + " elements of " +
                                    std::to_string(nv) + " sides");
       set.elements[i] = element - 1;
-      set.sides[i] = flipped[element - 1] ? nv - side : side - 1;
+      set.sides[i] = flipped[element - 1] ? flippedSide(side - 1, nv) : side - 1;
     }
     mesh.side_sets.push_back(std::move(set));
   }
 
-  Kokkos::deep_copy(mesh.coordinates, coordinates);
-  Kokkos::deep_copy(mesh.connectivity, connectivity);
-  Kokkos::deep_copy(mesh.element_block, element_block);
-  return mesh;
+  return std::move(assembled.mesh);
 }
 
 }  // namespace argine

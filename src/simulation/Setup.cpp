@@ -4,15 +4,26 @@
 #include "argine/input/DeckReader.hpp"
 #include "argine/mesh/MeshGeometry.hpp"
 #include "argine/meshio/ExodusMesh.hpp"
+#include "argine/meshio/GmshMesh.hpp"
 #include "argine/meshio/MeshGenerators.hpp"
 #include "argine/points/Seeding.hpp"
 
 namespace argine {
 
+Mesh readDeckMesh(const MeshSpec& spec) {
+  if (spec.generate) return generateMesh(spec.generator);
+  if (!spec.gmsh_file.empty()) return loadGmshMesh(spec.gmsh_file);
+  return readExodusMesh(spec.exodus_file);
+}
+
+std::string meshSource(const MeshSpec& spec) {
+  if (spec.generate) return "Mesh/Generate";
+  return spec.gmsh_file.empty() ? spec.exodus_file : spec.gmsh_file;
+}
+
 Mesh loadMesh(const Deck& deck) {
-  Mesh mesh = deck.mesh.generate ? generateMesh(deck.mesh.generator)
-                                 : readExodusMesh(deck.mesh.exodus_file);
-  const std::string source = deck.mesh.generate ? "Mesh/Generate" : deck.mesh.exodus_file;
+  Mesh mesh = readDeckMesh(deck.mesh);
+  const std::string source = meshSource(deck.mesh);
   checkMeshQuality(mesh, source);
   mesh.shape_functions = deck.mesh.shape_functions;  // checkMeshSpec: on a structured grid
   checkDeckAgainstMesh(deck, mesh);

@@ -153,8 +153,8 @@ TEST(DeckValidation, IntegersRejectFractionsAndUnlistedValues) {
 
 TEST(DeckValidation, AlternativesNeedExactlyOne) {
   expectDeckError(replaced(kBaseDeck, "  Mesh:\n", "  Mesh:\n    Exodus File: a.exo\n"), "Mesh",
-                  "give exactly one of 'Exodus File' or 'Generate' (found 'Exodus File' and "
-                  "'Generate')");
+                  "give exactly one of 'Exodus File' or 'Gmsh File' or 'Generate' (found "
+                  "'Exodus File' and 'Generate')");
   expectDeckError(replaced(kBaseDeck, "Conductivity: {Intrinsic Permeability (m2): 1.0e-12}",
                            "Conductivity: {Model: constant}"),
                   "Materials/soil/Conductivity",

@@ -45,6 +45,7 @@ struct GeneratorSpec {
 
 struct MeshSpec {
   std::string exodus_file;  ///< absolute path of an Exodus II mesh, or empty
+  std::string gmsh_file;    ///< absolute path of a gmsh .msh or .geo file, or empty
   bool generate = false;    ///< true when `Mesh/Generate` is used instead of a file
   GeneratorSpec generator;
   ShapeFamily shape_functions = ShapeFamily::Linear;  ///< `Shape Functions`
