@@ -87,6 +87,7 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
     solver_->distribute(*ranks_);
   }
   if (rank != 0) options_.quiet = true;
+  reports_ = rank == 0;
 }
 
 Simulation::~Simulation() = default;
@@ -151,7 +152,7 @@ RunSummary Simulation::run() {
   summary_.output_steps = results_ ? results_->steps() : 0;
   const long long total_points = totalPoints();  // collective: before the rank-0 report
 
-  if (!options_.quiet) {
+  if (reports_) {  // (P10) also with --quiet: quiet silences progress, not results
     const double rate =
         summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
     std::printf(
@@ -313,7 +314,7 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     solver_->distribute(*ranks_);
   }
   progress_->endStage(summary_.steps, seepage.time(), seepage.nextStep());
-  if (!options_.quiet) {
+  if (reports_) {
     const SeepageTotals& totals = seepage.totals();
     const Real stored = seepage.liquidMass() - initial_mass;
     std::printf(

@@ -30,7 +30,9 @@ struct CheckpointState;
 /// Options of `argine run` that are not part of the deck.
 struct RunOptions {
   std::string output_directory = "results";  ///< where the Exodus and CSV files go
-  bool quiet = false;                        ///< no progress output
+  /// no progress lines and no log of stage set-up; the stage and run summaries (steps,
+  /// throughput, where the time went, where the results are) are printed all the same
+  bool quiet = false;
   std::string restart;                       ///< (P8) checkpoint file to continue from; "": none
 };
 
@@ -101,6 +103,7 @@ class Simulation {
   // stages run distributed; rank 0 gathers the points by id and writes every file.
   std::unique_ptr<RankDecomposition> ranks_;  ///< null on one rank; outlives solver_
   bool points_replicated_ = false;
+  bool reports_ = true;  ///< this rank prints the summaries (rank 0)
   long long total_points_ = 0;  ///< points over all ranks at the last output  ///< every rank holds
                                 ///< all points (an implicit stage)
   bool distributed() const { return ranks_ != nullptr; }
