@@ -74,6 +74,8 @@ struct ImplicitSeepageSolver::Impl {
 
   // Time-dependent conditions (a stage's plan): re-evaluated for every step (at()).
   std::unique_ptr<SeepageBoundaryPlan> plan;
+  // The plan's condition owning each unknown (kNone: none), for the inflow per condition.
+  std::vector<int> condition_of_dof;
 
   void applyConditions(const SeepageBoundaryConditions& conditions, bool keep_held);
 
@@ -343,11 +345,23 @@ void ImplicitSeepageSolver::Impl::applyConditions(const SeepageBoundaryCondition
 
 void ImplicitSeepageSolver::setBoundaryConditions(const SeepageBoundaryConditions& conditions) {
   impl_->plan.reset();
+  impl_->totals.condition_inflow.clear();
+  impl_->totals.condition_inflow_last_step.clear();
   impl_->applyConditions(conditions, false);
 }
 
 void ImplicitSeepageSolver::setBoundaryPlan(const SeepageBoundaryPlan& plan) {
   impl_->plan = std::make_unique<SeepageBoundaryPlan>(plan);
+  Impl& s = *impl_;
+  s.condition_of_dof.assign(s.dofs(), kNone);
+  for (std::size_t c = 0; c < plan.conditions.size(); ++c)
+    for (const int node : plan.conditions[c].nodes) {
+      const int dof = s.dof_of_node.at(node);
+      if (dof != kNone && s.condition_of_dof[dof] == kNone)
+        s.condition_of_dof[dof] = static_cast<int>(c);
+    }
+  s.totals.condition_inflow.assign(plan.conditions.size(), 0);
+  s.totals.condition_inflow_last_step.assign(plan.conditions.size(), 0);
   impl_->applyConditions(plan.at(impl_->time, impl_->time, impl_->settings.theta), false);
 }
 
@@ -517,7 +531,13 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   // Mass balance of the step: storage change = inflow (supplies + reactions of held and
   // prescribed nodes) + dt x free-node residual (bounded by the mass tolerance).
   Real inflow = 0;
-  for (int i = 0; i < dofs(); ++i) inflow += isFixed(i) ? residual[i] : supply[i];
+  result.condition_inflow.assign(plan ? plan->conditions.size() : 0, 0);
+  for (int i = 0; i < dofs(); ++i) {
+    const Real node_inflow = isFixed(i) ? residual[i] : supply[i];
+    inflow += node_inflow;
+    if (plan && condition_of_dof[i] != kNone)
+      result.condition_inflow[condition_of_dof[i]] += node_inflow * dt;
+  }
   result.inflow = inflow * dt;
   Real storage_change = 0, max_ds = 0;
   for (std::size_t i = 0; i < liquid_points.size(); ++i) {
@@ -542,6 +562,11 @@ SeepageStepResult ImplicitSeepageSolver::step(Real dt) {
     s.time += dt;
     ++s.totals.steps;
     s.totals.inflow += result.inflow;
+    if (s.totals.condition_inflow.size() == result.condition_inflow.size()) {
+      for (std::size_t k = 0; k < result.condition_inflow.size(); ++k)
+        s.totals.condition_inflow[k] += result.condition_inflow[k];
+      s.totals.condition_inflow_last_step = result.condition_inflow;
+    }
     s.totals.storage_change += result.storage_change;
   } else {
     ++s.totals.rejected_steps;
@@ -648,6 +673,13 @@ Real ImplicitSeepageSolver::nextStep() const {
 Real ImplicitSeepageSolver::liquidMass() const {
   return impl_->pointsLiquidMass(impl_->p);
 }
+std::vector<std::string> ImplicitSeepageSolver::conditionNames() const {
+  std::vector<std::string> names;
+  if (impl_->plan)
+    for (const auto& condition : impl_->plan->conditions) names.push_back(condition.name);
+  return names;
+}
+
 const SeepageTotals& ImplicitSeepageSolver::totals() const {
   return impl_->totals;
 }

@@ -292,6 +292,8 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
   progress_->beginStage(stage.name, start, stage.duration);
   Real target = start;
   Real inflow_counted = 0;  // kg/m of this stage's boundary inflow already in the totals
+  const std::vector<std::string> condition_names = seepage.conditionNames();
+  std::vector<Real> condition_counted(condition_names.size(), 0);  // the same per condition
   while (seepage.time() < end - tolerance) {
     target = std::min(end, target + interval);
     if (end - target <= tolerance) target = end;
@@ -303,6 +305,7 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     flux_all_nodes_cumulative_ +=
         (seepage.totals().inflow - inflow_counted) / solver_->referenceLiquidDensity();
     inflow_counted = seepage.totals().inflow;
+    accumulateImplicitBoundaryFluxes(condition_names, seepage.totals(), condition_counted);
     solver_->setTime(seepage.time());
     summary_.steps = steps_before + seepage.totals().steps;
     summary_.point_updates += seepage.totals().steps * points_.count;
@@ -468,6 +471,24 @@ void Simulation::accumulateBoundaryFluxes() {
     flux_cumulative_[k] += volumes[c];
   }
   if (!conditions.empty()) flux_all_nodes_cumulative_ += volumes[conditions.size()];
+}
+
+// (P10) The implicit path's per-condition columns: the volume through each condition in its
+// last accepted step (`_step`) and since the start (`_cumulative`), as on the explicit path.
+void Simulation::accumulateImplicitBoundaryFluxes(const std::vector<std::string>& names,
+                                                  const SeepageTotals& totals,
+                                                  std::vector<Real>& counted) {
+  if (!boundary_flux_ || totals.condition_inflow.size() != names.size()) return;
+  std::fill(flux_last_step_.begin(), flux_last_step_.end(), 0.0);
+  const Real density = solver_->referenceLiquidDensity();
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    const auto k = static_cast<std::size_t>(
+        std::find(flux_names_.begin(), flux_names_.end(), names[c]) - flux_names_.begin());
+    if (k == flux_names_.size()) continue;  // (not a hydraulic condition: carries nothing)
+    flux_last_step_[k] = totals.condition_inflow_last_step[c] / density;
+    flux_cumulative_[k] += (totals.condition_inflow[c] - counted[c]) / density;
+    counted[c] = totals.condition_inflow[c];
+  }
 }
 
 Real Simulation::liquidMassNow() const {

@@ -36,6 +36,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <Teuchos_Comm.hpp>
@@ -57,7 +58,10 @@ struct SeepageStepResult {
   int active_set_passes = 0;  ///< 1 when no switch changed
   int linear_iterations = 0;  ///< Krylov iterations over all Picard iterations
   Real max_saturation_change = 0;
-  Real inflow = 0;          ///< liquid mass through the boundary over the step (kg/m)
+  Real inflow = 0;  ///< liquid mass through the boundary over the step (kg/m)
+  /// The same through each condition of the plan (conditionNames() order; P10): their sum
+  /// is `inflow`.
+  std::vector<Real> condition_inflow;
   Real storage_change = 0;  ///< change of the points' liquid mass over the step (kg/m)
   /// Free-node residual sum_i |R_i| (kg/s per m) at each iterate of the last active-set pass,
   /// the starting one first (the convergence history).
@@ -77,6 +81,9 @@ struct SeepageTotals {
   long long steps = 0, rejected_steps = 0, picard_iterations = 0, linear_iterations = 0;
   Real inflow = 0;          ///< (kg/m)
   Real storage_change = 0;  ///< (kg/m)
+  /// Inflow through each condition of the current plan (kg/m, conditionNames() order), and
+  /// that of its last accepted step (P10: the per-condition columns of the boundary-flux CSV).
+  std::vector<Real> condition_inflow, condition_inflow_last_step;
 };
 
 class ImplicitSeepageSolver {
@@ -132,6 +139,9 @@ class ImplicitSeepageSolver {
   /// Liquid mass of the liquid-carrying points at the current nodal p_L (kg/m).
   Real liquidMass() const;
   const SeepageTotals& totals() const;
+  /// The names of the plan's conditions (empty without a plan), in the order of the
+  /// per-condition inflows of SeepageStepResult and SeepageTotals.
+  std::vector<std::string> conditionNames() const;
   /// p_L by mesh node (Pa); NaN at inactive nodes.
   std::vector<Real> nodalPressure() const;
   /// Mesh nodes held at p_L = 0 by the ponding / seepage-face switch.

@@ -19,6 +19,7 @@ namespace argine {
 class ExplicitTwoPhaseSolver;
 class RankDecomposition;
 struct TimeStepChoice;
+struct SeepageTotals;
 class ResultsWriter;
 class CsvWriter;
 class ProgressReporter;
@@ -33,7 +34,7 @@ struct RunOptions {
   /// no progress lines and no log of stage set-up; the stage and run summaries (steps,
   /// throughput, where the time went, where the results are) are printed all the same
   bool quiet = false;
-  std::string restart;                       ///< (P8) checkpoint file to continue from; "": none
+  std::string restart;  ///< (P8) checkpoint file to continue from; "": none
 };
 
 /// What a finished run measured.
@@ -81,6 +82,8 @@ class Simulation {
   // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
   void openBoundaryFluxLog();
   void accumulateBoundaryFluxes();
+  void accumulateImplicitBoundaryFluxes(const std::vector<std::string>& names,
+                                        const SeepageTotals& totals, std::vector<Real>& counted);
   void writeBoundaryFluxes();
   /// The points' liquid mass now (kg/m, all ranks): after an explicit step its diagnostics,
   /// after an implicit stage that stage's, before any step the initial mass.
@@ -103,7 +106,7 @@ class Simulation {
   // stages run distributed; rank 0 gathers the points by id and writes every file.
   std::unique_ptr<RankDecomposition> ranks_;  ///< null on one rank; outlives solver_
   bool points_replicated_ = false;
-  bool reports_ = true;  ///< this rank prints the summaries (rank 0)
+  bool reports_ = true;         ///< this rank prints the summaries (rank 0)
   long long total_points_ = 0;  ///< points over all ranks at the last output  ///< every rank holds
                                 ///< all points (an implicit stage)
   bool distributed() const { return ranks_ != nullptr; }
