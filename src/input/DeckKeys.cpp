@@ -532,8 +532,15 @@ ListSchema implicitSeepageKeys() {
   seepage.add(
       KeySpec::real("Maximum Step (s)", "s", "largest time step (default: unlimited)").above(0));
   seepage.add(KeySpec::boolean("Adaptive Step",
-                               "adapt the step to the Picard iterations and the saturation change")
+                               "adapt the step to its time error, the saturation change and the "
+                               "Picard iterations (doc/theory.md, 'Time step')")
                   .byDefault(true));
+  seepage.add(KeySpec::real("Step Error (Pa)", "Pa",
+                            "target local time error of p_L per step (adaptive step): the step "
+                            "grows while backward Euler's error, estimated from the change of "
+                            "dp_L/dt between steps, stays below it")
+                  .above(0)
+                  .byDefault(100.0));
   seepage.add(KeySpec::real("Maximum Saturation Change", "-",
                             "target largest |dS_L| of a point per step (adaptive step)")
                   .above(0)

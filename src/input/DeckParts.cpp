@@ -324,6 +324,7 @@ ImplicitSeepageSpec parseImplicitSeepage(const DeckSection& seepage) {
   spec.adaptive = seepage.boolean("Adaptive Step");
   spec.reuse_matrix = seepage.boolean("Reuse Matrix");
   spec.max_saturation_change = seepage.real("Maximum Saturation Change");
+  spec.step_error = seepage.real("Step Error (Pa)");
   spec.max_picard_iterations = static_cast<int>(seepage.integer("Picard Iterations"));
   spec.pressure_tolerance = seepage.real("Pressure Tolerance (Pa)");
   spec.mass_tolerance = seepage.real("Mass Tolerance");

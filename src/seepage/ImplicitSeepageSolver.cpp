@@ -11,6 +11,7 @@
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/seepage/SeepagePointTerms.hpp"
+#include "argine/seepage/SeepageStepControl.hpp"
 #include "argine/transfer/PointShapes.hpp"
 
 namespace argine {
@@ -64,6 +65,9 @@ struct ImplicitSeepageSolver::Impl {
   Real gravity = kStandardGravity;
   Real reference_density = 1000;  // rho_L0 of the supplied water
   Real time = 0, next_step = 1;
+  // The last accepted step and its nodal increments (the adaptive step's time error).
+  Real last_step = 0;
+  std::vector<Real> last_increment;
   SeepageTotals totals;
 
   // Per unknown: prescribed pressure, supply (kg/s per m), switchable, held at p = 0.
@@ -308,6 +312,7 @@ void ImplicitSeepageSolver::setSettings(const ImplicitSeepageSpec& settings) {
                      "gmres or direct with Nonlinear Solver: newton (non-symmetric Jacobian)");
   impl_->settings = settings;
   impl_->next_step = settings.initial_step;
+  impl_->last_step = 0;  // a new stage: no rate history for the time error
   impl_->system->setSolver(settings.linear);
 }
 
@@ -374,6 +379,7 @@ void ImplicitSeepageSolver::beginStage(const StageSpec& stage) {
 
 void ImplicitSeepageSolver::projectPressureFromPoints() {
   Impl& s = *impl_;
+  s.last_step = 0;  // a state set from outside: no rate history
   const auto pressure =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.points.pressure_liquid);
   // Consistent L2 projection: sum_p V N_a N_b p_b = sum_p V N_a p_p.
@@ -399,6 +405,7 @@ void ImplicitSeepageSolver::projectPressureFromPoints() {
 
 void ImplicitSeepageSolver::setNodalPressure(const std::function<Real(Real, Real)>& pressure) {
   Impl& s = *impl_;
+  s.last_step = 0;                  // a state set from outside: no rate history
   s.old_level_from_points = false;  // the caller's nodal field is the start
   const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.mesh.coordinates);
   for (int dof = 0; dof < s.dofs(); ++dof) {
@@ -579,10 +586,12 @@ SeepageStepResult ImplicitSeepageSolver::step(Real dt) {
 void ImplicitSeepageSolver::advanceTo(Real end) {
   Impl& s = *impl_;
   const Real tolerance = 1e-12 * std::max<Real>(std::fabs(end), 1);
+  std::vector<Real> start;
   while (s.time < end - tolerance) {
     const Real planned =
         s.settings.adaptive ? std::min(s.next_step, s.settings.max_step) : s.settings.initial_step;
     const Real dt = std::min(planned, end - s.time);
+    if (s.settings.adaptive) start = s.p;
     const SeepageStepResult result = step(dt);
     if (!result.converged) {
       if (!s.settings.adaptive || dt <= s.settings.min_step) {
@@ -594,13 +603,20 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
       s.next_step = std::max(0.5 * dt, s.settings.min_step);
       continue;
     }
-    if (!s.settings.adaptive || dt < planned * (1 - 1e-9)) continue;  // cut to land: keep
-    // Grow when Picard converges fast, shrink when slow; the saturation change caps it.
-    Real factor = result.picard_iterations <= 4 ? 1.5 : result.picard_iterations >= 10 ? 0.6 : 1.0;
-    if (result.max_saturation_change > 0)
-      factor = std::min(factor, s.settings.max_saturation_change / result.max_saturation_change);
-    factor = std::clamp<Real>(factor, 0.3, 2.0);
-    s.next_step = std::min(std::max(dt * factor, s.settings.min_step), s.settings.max_step);
+    if (!s.settings.adaptive) continue;
+    // The time error needs the previous step's nodal rate (SeepageStepControl.hpp).
+    std::vector<Real> increment(s.p.size());
+    for (std::size_t i = 0; i < increment.size(); ++i) increment[i] = s.p[i] - start[i];
+    SeepageStepOutcome outcome;
+    outcome.dt = dt;
+    outcome.iterations = result.picard_iterations;
+    outcome.max_saturation_change = result.max_saturation_change;
+    if (s.last_step > 0)
+      outcome.time_error = seepageTimeError(dt, increment, s.last_step, s.last_increment);
+    s.last_increment = std::move(increment);
+    s.last_step = dt;
+    if (dt < planned * (1 - 1e-9)) continue;  // cut to land on `end`: keep the planned step
+    s.next_step = nextSeepageStep(outcome, s.settings);
   }
 }
 

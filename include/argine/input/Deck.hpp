@@ -104,6 +104,7 @@ struct ImplicitSeepageSpec {
   Real max_step = 1e30;                ///< (s)
   bool adaptive = true;                ///< false: every step is initial_step
   Real max_saturation_change = 0.05;   ///< target max |dS_L| per step at any point
+  Real step_error = 100;               ///< target local time error of p_L per step (Pa)
   int max_picard_iterations = 30;      ///< per step (and per active-set pass)
   int max_active_set_iterations = 30;  ///< seepage face / ponding switches per step
   Real pressure_tolerance = 1e-6;      ///< max |dp_L| of the last Picard update (Pa)
