@@ -29,7 +29,9 @@ struct PointStateUpdate {
     const int first = chunk * kLanes, end = first + kLanes < count ? first + kLanes : count;
     if (lanesShareAMaterial(first)) {
       const PointMaterial& material = v.materials_m(v.points.material(first));
-      for (int p = first; p < end; ++p) closeSeparation(v, p);
+      // a gap to close is rare (points that separated): one vector test for the four
+      if (anyLane(load<Lanes>(v.points.separation, first) > 0))
+        for (int p = first; p < end; ++p) closeSeparation(v, p);
       updatePorosityAndVolume<Lanes>(v, first);
       updateLiquidPressureLanes(v, first, material);
       updateEffectiveStressLanes(v, first, material);
