@@ -40,11 +40,15 @@ KOKKOS_FORCEINLINE_FUNCTION void storeBlock(Real* first, Lanes v) {
   std::memcpy(first, &v, sizeof v);
 }
 
+/// Four ints, one vector register (GCC's vector extension, as Lanes).
+using IntLanes = int __attribute__((vector_size(kLanes * sizeof(int))));
+
 /// A point's 3 x 3 stencil expanded for a kernel: node a = ax + 3 ay, its N and dN/dx (the
 /// bits of gridValue and gridGradient), and the x of the stencil's columns and the y of its
 /// rows (APIC's offsets x_a - x_p: on the grid a node's x depends on its column only).
 struct GridStencil {
-  int node[kGridStencilNodes];
+  /// One more than the nodes: a row of the stencil's nodes is written as four ints.
+  int node[kGridStencilNodes + 1];
   /// One more than the nodes: a row of the stencil is written as one Lanes (constructor).
   Real N[kGridStencilNodes + 1], dx[kGridStencilNodes + 1], dy[kGridStencilNodes + 1];
 
@@ -55,14 +59,21 @@ struct GridStencil {
   KOKKOS_INLINE_FUNCTION GridStencil(const TensorShape& t, int row) {
     static_assert(sizeof(t.value[0]) == kGridStencil * sizeof(Real) && kGridStencil + 1 == kLanes,
                   "a row of x values and the first y value are one Lanes");
+    static_assert(sizeof(t.line[0]) == kGridStencil * sizeof(int), "rows of lines as values");
     const Lanes wx = loadBlock(&t.value[0][0]), gx = loadBlock(&t.gradient[0][0]);
+    // the x lines in lanes 0-2 (lane 3 the first y line: padding, as for the values); read
+    // once, so that the stores to node[] need not reload them
+    IntLanes lines_x;
+    std::memcpy(&lines_x, &t.line[0][0], sizeof lines_x);
+    int row_start[kGridStencil];
+    for (int ay = 0; ay < kGridStencil; ++ay) row_start[ay] = t.line[1][ay] * row;
     for (int ay = 0; ay < kGridStencil; ++ay) {
       const Real wy = t.value[1][ay], gy = t.gradient[1][ay];
       storeBlock(&N[kGridStencil * ay], wx * wy);
       storeBlock(&dx[kGridStencil * ay], gx * wy);
       storeBlock(&dy[kGridStencil * ay], wx * gy);
-      for (int ax = 0; ax < kGridStencil; ++ax)
-        node[ax + kGridStencil * ay] = t.line[0][ax] + t.line[1][ay] * row;
+      const IntLanes nodes = lines_x + row_start[ay];
+      std::memcpy(&node[kGridStencil * ay], &nodes, sizeof nodes);
     }
   }
 };
@@ -287,28 +298,33 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
 /// divergences, and where the storage is tiny (saturated) and the stiffness jumps between
 /// neighbours (a wetting front) the difference was stored as a pressure pattern the nodal
 /// forces cannot see (V3 on B-splines: p_L 137 % of the range off; doc/theory.md Sec. 3.11).
+/// The cell's four corners in the order of the stencil's nodes (the other five have no
+/// weight at the centre), each with N = 1/2 1/2 and dN/dx = (-+1/h) 1/2, the products of
+/// cellCentreWeights1D's weights: the same bits as the sum over the nine nodes.
 template <class Values>
 KOKKOS_INLINE_FUNCTION Real cellCentreAdvectiveFlux(const TensorShape& t, const GridStencil& s,
                                                     const Values& values_i) {
-  Real wx[kGridStencil], sx[kGridStencil], wy[kGridStencil], sy[kGridStencil];
-  cellCentreWeights1D(t, 0, wx, sx);
-  cellCentreWeights1D(t, 1, wy, sy);
+  const CellCentre1D centre_x = cellCentre1D(t, 0), centre_y = cellCentre1D(t, 1);
+  const Real half = 0.5;
+  const Real sx[2] = {-centre_x.inverse_h, centre_x.inverse_h};
+  const Real sy[2] = {-centre_y.inverse_h, centre_y.inverse_h};
   Real w[kDim] = {0, 0}, content = 0, divergence = 0, gradient[kDim] = {0, 0};
-  for (int a = 0; a < kGridStencilNodes; ++a) {
-    const int ax = a % kGridStencil, ay = a / kGridStencil;
-    const Real N = wx[ax] * wy[ay];
-    if (N == 0) continue;  // not a corner of the cell (its gradient weights vanish too)
-    const Real gx = sx[ax] * wy[ay], gy = wx[ax] * sy[ay];
-    const Real* values = &values_i(s.node[a], 0);
-    const Real w_x = values[kReadStrainVelocityLiquid] - values[kReadStrainVelocitySolid];
-    const Real w_y = values[kReadStrainVelocityLiquid + 1] - values[kReadStrainVelocitySolid + 1];
-    const Real c = values[kReadStrainLiquidContent];
-    w[0] += N * w_x;
-    w[1] += N * w_y;
-    content += N * c;
-    divergence += w_x * gx + w_y * gy;
-    gradient[0] += c * gx;
-    gradient[1] += c * gy;
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      const int a = centre_x.slot + i + kGridStencil * (centre_y.slot + j);
+      const Real N = half * half;
+      const Real gx = sx[i] * half, gy = half * sy[j];
+      const Real* values = &values_i(s.node[a], 0);
+      const Real w_x = values[kReadStrainVelocityLiquid] - values[kReadStrainVelocitySolid];
+      const Real w_y = values[kReadStrainVelocityLiquid + 1] - values[kReadStrainVelocitySolid + 1];
+      const Real c = values[kReadStrainLiquidContent];
+      w[0] += N * w_x;
+      w[1] += N * w_y;
+      content += N * c;
+      divergence += w_x * gx + w_y * gy;
+      gradient[0] += c * gx;
+      gradient[1] += c * gy;
+    }
   }
   return content * divergence + gradient[0] * w[0] + gradient[1] * w[1];
 }
@@ -326,9 +342,8 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
   const GridStencil s(t, row);
   // block 0 (v_S, v_L): sum N v, sum v dN/dx, sum v dN/dy; L_jk = d v_S,j / d x_k
   Lanes velocity = {}, gradient_x = {}, gradient_y = {};
-  // wet: the divergence sum (v_L . grad N) node by node (lane 0)
+  // wet: the divergence sum (v_L . grad N) node by node (lane 2: v_L,x dN/dx + v_L,y dN/dy)
   Lanes divergences = {};
-  const Lanes zero = {};
   const auto gather = [&](auto with_liquid) {
   // One node an iteration: unrolled, the compiler computes all nine nodes' products ahead
   // of the in-order sums and spills them (27 instructions a point more).
@@ -341,15 +356,8 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
       velocity += N * vi;
       gradient_x += vx;
       gradient_y += vy;
-      if constexpr (decltype(with_liquid)::value) {
-        const Lanes liquid = loadBlock(values + kLanes);  // c, sum N V, conditioned
-        // (v_L - v_S, c - 0): w and the content
-        const Lanes w = __builtin_shufflevector(vi, liquid, 2, 3, 4, 5) -
-                        __builtin_shufflevector(vi, zero, 0, 1, 4, 4);
-        const Lanes wx = w * dx, wy = w * dy;
-        divergences += __builtin_shufflevector(vx, wx, 2, 4, 0, 0) +
-                       __builtin_shufflevector(vy, wy, 3, 5, 0, 0);
-      }
+      if constexpr (decltype(with_liquid)::value)
+        divergences += vx + __builtin_shufflevector(vy, vy, 1, 0, 3, 2);
     }
   };
   if (wet)
@@ -372,7 +380,7 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
       storeComponents(v.affine_liquid_p, p, liquid_gradient);
     }
   }
-  const Real divergence = divergences[0];
+  const Real divergence = divergences[2];
   const Real flux = wet ? dt * cellCentreAdvectiveFlux(t, s, values_i) : 0;
   // A point alone exchanges no liquid (strainIncrementsAt): every node of weight is its
   // alone (its liquid volume no more than the point's own N V) and unconditioned.

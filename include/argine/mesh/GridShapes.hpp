@@ -136,15 +136,19 @@ KOKKOS_INLINE_FUNCTION void tensorShape(ShapeFamily family, const StructuredGrid
   }
 }
 
-/// The weights of the centre of the point's cell on the stencil lines of axis d: 1/2 on the
-/// cell's two lines, 0 on the third. Both families take 1/2, 1/2 at a cell centre (the
-/// B-spline's third line is 1.5 cells away; uGIMP is linear there), also in an edge cell,
-/// whose ghost line has no weight at its centre. The cell is that of xi = sum_k N_k line_k
-/// (both families reproduce linear fields, and the fold keeps that); a folded ghost slot
-/// repeats its neighbour's line and gets nothing. Used where a value must be one per cell,
-/// as the element centre is for linear shapes (the advective flux of 4.16).
-KOKKOS_INLINE_FUNCTION void cellCentreWeights1D(const TensorShape& t, int d, Real w[kGridStencil],
-                                                Real* slope = nullptr) {
+/// The centre of the point's cell on the stencil lines of axis d (cellCentre1D): the slot of
+/// the cell's lower line (the upper line is the next slot) and 1/h.
+struct CellCentre1D {
+  int slot;
+  Real inverse_h;
+};
+
+/// The cell of the point's centre on axis d: that of xi = sum_k N_k line_k (both families
+/// reproduce linear fields, and the fold keeps that), kept within the stencil's lines (a
+/// folded ghost slot repeats its neighbour's line and is no line of the cell); its lower
+/// line's slot, and 1/h = sum_k dN_k/dx line_k. The stencil's other lines are consecutive
+/// from the first unfolded slot, so the cell's lines are two consecutive slots.
+KOKKOS_INLINE_FUNCTION CellCentre1D cellCentre1D(const TensorShape& t, int d) {
   Real xi = 0;
   for (int k = 0; k < kGridStencil; ++k) xi += t.value[d][k] * t.line[d][k];
   const int first = t.line[d][0] == t.line[d][1] ? 1 : 0;  // a folded lower ghost
@@ -152,14 +156,26 @@ KOKKOS_INLINE_FUNCTION void cellCentreWeights1D(const TensorShape& t, int d, Rea
   int cell = static_cast<int>(Kokkos::Experimental::floor(xi));
   if (cell > t.line[d][last] - 1) cell = t.line[d][last] - 1;
   if (cell < t.line[d][first]) cell = t.line[d][first];
-  // d/dx at the centre: -1/h, +1/h on the cell's lines (1/h = sum_k dN_k/dx line_k)
   Real inverse_h = 0;
   for (int k = 0; k < kGridStencil; ++k) inverse_h += t.gradient[d][k] * t.line[d][k];
+  return {first + (cell - t.line[d][first]), inverse_h};
+}
+
+/// The weights of the centre of the point's cell on the stencil lines of axis d: 1/2 on the
+/// cell's two lines, 0 on the third. Both families take 1/2, 1/2 at a cell centre (the
+/// B-spline's third line is 1.5 cells away; uGIMP is linear there), also in an edge cell,
+/// whose ghost line has no weight at its centre (cellCentre1D finds the cell). Used where a
+/// value must be one per cell, as the element centre is for linear shapes (the advective flux
+/// of 4.16).
+KOKKOS_INLINE_FUNCTION void cellCentreWeights1D(const TensorShape& t, int d, Real w[kGridStencil],
+                                                Real* slope = nullptr) {
+  const CellCentre1D centre = cellCentre1D(t, d);
+  // d/dx at the centre: -1/h, +1/h on the cell's lines
   for (int k = 0; k < kGridStencil; ++k) {
-    const int line = t.line[d][k];
-    const bool in_cell = k >= first && k <= last && (line == cell || line == cell + 1);
+    const bool in_cell = k == centre.slot || k == centre.slot + 1;
     w[k] = in_cell ? Real(0.5) : Real(0);
-    if (slope) slope[k] = !in_cell ? Real(0) : line == cell ? -inverse_h : inverse_h;
+    if (slope)
+      slope[k] = !in_cell ? Real(0) : k == centre.slot ? -centre.inverse_h : centre.inverse_h;
   }
 }
 
