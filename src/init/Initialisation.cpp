@@ -11,9 +11,11 @@ namespace argine {
 std::string initialisePoints(const Deck& deck, const Mesh& mesh, MaterialPoints& points) {
   initialisePointState(deck.materials, points);
   const InitialisationSpec& spec = deck.initialisation;
-  if (spec.method != InitialisationSpec::Method::K0Procedure)
+  if (spec.method == InitialisationSpec::Method::Uniform)
     return "initial state: uniform per material (Materials/<name>/Initial State)";
   const Real gravity = deck.stages.empty() ? kStandardGravity : deck.stages.front().gravity;
+  if (spec.method == InitialisationSpec::Method::PorePressure)
+    return applyPorePressure(spec, deck.materials, gravity, points);
   applyK0Procedure(K0Profile(spec, mesh, deck.materials, gravity), points);
   char line[256];
   std::snprintf(line, sizeof line,

@@ -121,27 +121,40 @@ void applyK0Procedure(const K0Profile& profile, MaterialPoints& points) {
   for (int p = 0; p < points.count; ++p)
     states[p] = profile.state(material(p), position(p, 0), position(p, 1));
 
-  Kokkos::View<Real* [3], Kokkos::HostSpace> host("k0_state", points.count);
+  Kokkos::View<Real* [2], Kokkos::HostSpace> host("k0_state", points.count);
+  std::vector<Real> pressure(points.count);
   for (int p = 0; p < points.count; ++p) {
-    host(p, 0) = states[p].liquid_pressure;
-    host(p, 1) = states[p].effective_vertical_stress;
-    host(p, 2) = states[p].earth_pressure_coefficient;
+    pressure[p] = states[p].liquid_pressure;
+    host(p, 0) = states[p].effective_vertical_stress;
+    host(p, 1) = states[p].earth_pressure_coefficient;
   }
   auto state_m = Kokkos::create_mirror_view_and_copy(MemSpace(), host);
-  const MaterialTable& table = profile.table();
-  const auto materials_m = table.materials();
   const MaterialPoints pts = points;
   Kokkos::parallel_for(
       "apply_k0_procedure", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        const PointMaterial& m = materials_m(pts.material(p));
-        const Real vertical = state_m(p, 1), k0 = state_m(p, 2);
+        const Real vertical = state_m(p, 0), k0 = state_m(p, 1);
         pts.stress_effective(p, XX) = k0 * vertical;
         pts.stress_effective(p, YY) = vertical;
         pts.stress_effective(p, ZZ) = k0 * vertical;
         pts.stress_effective(p, XY) = 0;
+      });
+  setPointLiquidPressures(profile.table(), pressure, points);
+}
+
+void setPointLiquidPressures(const MaterialTable& table, const std::vector<Real>& pressure,
+                             MaterialPoints& points) {
+  Kokkos::View<Real*, Kokkos::HostSpace> host("liquid_pressure", points.count);
+  for (int p = 0; p < points.count; ++p) host(p) = pressure[p];
+  auto pressure_m = Kokkos::create_mirror_view_and_copy(MemSpace(), host);
+  const auto materials_m = table.materials();
+  const MaterialPoints pts = points;
+  Kokkos::parallel_for(
+      "set_point_liquid_pressures", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        const PointMaterial& m = materials_m(pts.material(p));
         if (!carriesLiquid(m.phase)) return;
-        const Real pressure = state_m(p, 0);
+        const Real pressure = pressure_m(p);
         const Real density = liquidDensity(m.liquid, pressure);  // 4.13
         const LiquidState liquid = saturationAndConductivity(m, pressure);
         pts.pressure_liquid(p) = pressure;
@@ -150,6 +163,34 @@ void applyK0Procedure(const K0Profile& profile, MaterialPoints& points) {
         pts.conductivity(p) = liquid.conductivity;
         pts.mass_liquid(p) = pts.porosity(p) * liquid.saturation * density * pts.volume(p);  // 4.47
       });
+}
+
+std::string applyPorePressure(const InitialisationSpec& spec,
+                              const std::vector<MaterialSpec>& materials, Real gravity,
+                              MaterialPoints& points) {
+  const MaterialTable table(materials);
+  const auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.material);
+  const auto position = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.position);
+  std::vector<Real> pressure(points.count);
+  const bool from_table = !spec.pore_pressure_table.empty();
+  const Polyline surface =
+      from_table ? Polyline(spec.pore_pressure_table, "Initialisation/Pore Pressure Table")
+                 : Polyline(spec.phreatic_surface, "Initialisation/Phreatic Surface (m)");
+  for (int p = 0; p < points.count; ++p) {
+    const MaterialSpec& m = materials[material(p)];
+    if (m.phase == PhaseModel::Dry) continue;
+    pressure[p] = from_table
+                      ? surface.at(position(p, 1))
+                      : hydrostaticPressure(m.liquid.density, gravity, surface.at(position(p, 0)),
+                                            position(p, 1), spec.max_suction);
+  }
+  setPointLiquidPressures(table, pressure, points);
+  if (from_table)
+    return "initial state: p_L from Initialisation/Pore Pressure Table, stress per "
+           "material (Initial State)";
+  return std::string("initial state: hydrostatic p_L from the phreatic surface") +
+         (spec.max_suction >= 0 ? ", suction capped" : "") +
+         ", stress per material (Initial State)";
 }
 
 }  // namespace argine

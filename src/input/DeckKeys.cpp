@@ -732,7 +732,8 @@ ListSchema initialisationKeys() {
   init.add(KeySpec::choice("Method", deckWords(kInitialisationWords),
                            "uniform: each material's Initial State; K0 procedure: geostatic "
                            "stress and hydrostatic p_L from the surfaces below (thesis Ch. 4 "
-                           "Sec. 5.1)")
+                           "Sec. 5.1); pore pressure: p_L (and S_L, k, M_L) from a phreatic "
+                           "surface or a table, the stress each material's Initial State")
                .byDefault(std::string("uniform")));
   init.add(KeySpec::reals("Ground Surface (m)", "m", 0,
                           "ground surface as x0, y0, x1, y1, ... (x increasing; flat beyond the "
@@ -742,13 +743,20 @@ ListSchema initialisationKeys() {
   init.add(KeySpec::reals("Phreatic Surface (m)", "m", 0,
                           "zero-pressure surface as x0, y0, x1, y1, ... (x increasing); above the "
                           "ground it is an outside water level whose weight loads the ground. "
-                          "Absent: each material's uniform Initial State p_L")
-               .when("Method", {"K0 procedure"}));
+                          "Absent: each material's uniform Initial State p_L. With pore "
+                          "pressure: p_L = rho_L g (y_ph(x) - y)")
+               .when("Method", {"K0 procedure", "pore pressure"}));
   init.add(KeySpec::real("Maximum Suction (Pa)", "Pa",
                          "cap on the suction above the phreatic surface (Fig. 4.7 a); absent: "
                          "linear hydrostatic suction (Fig. 4.7 b)")
                .atLeast(0)
-               .when("Method", {"K0 procedure"}));
+               .when("Method", {"K0 procedure", "pore pressure"}));
+  init.add(KeySpec::reals("Pore Pressure Table", "m, Pa", 0,
+                          "p_L as a function of height: pairs y0, p0, y1, p1, ... (y increasing; "
+                          "linear between, constant beyond the ends), the same at every x")
+               .when("Method", {"pore pressure"}));
+  init.exactlyOneOf({"Phreatic Surface (m)", "Pore Pressure Table"},
+                    Condition{"Method", {"pore pressure"}});
   return init;
 }
 

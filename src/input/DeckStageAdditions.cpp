@@ -50,8 +50,25 @@ bool isMohrCoulomb(SolidModel model) {
 InitialisationSpec parseInitialisation(const DeckSection& initialisation) {
   InitialisationSpec spec;
   spec.method = deckValue(kInitialisationWords, initialisation.word("Method"));
-  if (spec.method != InitialisationSpec::Method::K0Procedure) return spec;
-  spec.ground_surface = vertexPairs(initialisation, "Ground Surface (m)");
+  if (spec.method == InitialisationSpec::Method::Uniform) return spec;
+  if (spec.method == InitialisationSpec::Method::K0Procedure)
+    spec.ground_surface = vertexPairs(initialisation, "Ground Surface (m)");
+  if (initialisation.has("Pore Pressure Table")) {
+    const std::string key = "Pore Pressure Table";
+    const std::vector<double> values = initialisation.reals(key);
+    const std::string where = initialisation.pathOf(key);
+    if (values.empty() || values.size() % 2 != 0)
+      throw InputError(where, "expected y, p_L pairs (an even, non-zero count of numbers), got " +
+                                  std::to_string(values.size()) + " numbers");
+    for (std::size_t i = 0; i < values.size(); i += 2) {
+      if (!spec.pore_pressure_table.empty() && !(values[i] > spec.pore_pressure_table.back()[0]))
+        throw InputError(where, "y must increase from pair to pair; pair " +
+                                    std::to_string(i / 2 + 1) +
+                                    " has y = " + formatReal(values[i]) +
+                                    " after y = " + formatReal(spec.pore_pressure_table.back()[0]));
+      spec.pore_pressure_table.push_back({values[i], values[i + 1]});
+    }
+  }
   if (initialisation.has("Phreatic Surface (m)"))
     spec.phreatic_surface = vertexPairs(initialisation, "Phreatic Surface (m)");
   if (initialisation.has("Maximum Suction (Pa)"))

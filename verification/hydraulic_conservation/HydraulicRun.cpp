@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "argine/init/Initialisation.hpp"
 #include "argine/physics/PointInitialisation.hpp"
 #include "argine/simulation/Setup.hpp"
 
@@ -31,7 +32,7 @@ HydraulicRun::HydraulicRun(const Deck& deck, const Initialiser& initialise) : de
   const double start = now(), cpu_start = processorSeconds();
   mesh_ = loadMesh(deck_);
   points_ = seedPoints(deck_, mesh_);
-  initialisePointState(deck_.materials, points_);
+  (void)initialisePoints(deck_, mesh_, points_);  // the deck's Initialisation, as argine run
   if (initialise) initialise(deck_.materials, points_);
   solver_ = std::make_unique<ExplicitTwoPhaseSolver>(mesh_, points_, deck_.materials);
   solver_->setSortInterval(ExplicitTwoPhaseSolver::kRecommendedSortInterval);

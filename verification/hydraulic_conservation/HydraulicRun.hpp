@@ -22,8 +22,8 @@ class HydraulicRun {
  public:
   /// Sets up the points after initialisePointState (e.g. a hydrostatic p_L profile).
   using Initialiser = std::function<void(const std::vector<MaterialSpec>&, MaterialPoints&)>;
-  /// Loads the mesh, seeds and initialises the points (then `initialise`, if given), begins
-  /// the first stage.
+  /// Loads the mesh, seeds and initialises the points as the deck's Initialisation says (as
+  /// `argine run` does; then `initialise`, if given), begins the first stage.
   explicit HydraulicRun(const Deck& deck, const Initialiser& initialise = nullptr);
   HydraulicRun(const HydraulicRun&) = delete;
   HydraulicRun& operator=(const HydraulicRun&) = delete;

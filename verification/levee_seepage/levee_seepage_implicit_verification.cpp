@@ -41,6 +41,7 @@
 #include "CommandLine.hpp"
 #include "SectionProfiles.hpp"
 #include "VerificationMain.hpp"
+#include "argine/init/Initialisation.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -57,18 +58,6 @@ using namespace argine::verification::v4;
 namespace {
 
 constexpr Real kWaterTable = 0.2;
-
-/// p_L = rho_L g (0.2 - y) at every point, with rho_L, S_L, k, M_L to match (4.13, 4.47).
-void hydrostaticProfile(const std::vector<argine::MaterialSpec>& materials,
-                        argine::MaterialPoints& points) {
-  const argine::MaterialTable table(materials);
-  const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.position);
-  auto P = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.pressure_liquid);
-  const auto M = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.material);
-  for (int p = 0; p < points.count; ++p)
-    P(p) = table.host(M(p)).liquid.density * argine::kStandardGravity * (kWaterTable - X(p, 1));
-  Kokkos::deep_copy(points.pressure_liquid, P);
-}
 
 struct RunResult {
   std::string name;
@@ -117,8 +106,7 @@ RunResult runImplicit(const argine::Deck& base, const ImplicitSettings& settings
   stage.seepage.max_saturation_change = max_saturation_change;
   const argine::Mesh mesh = argine::loadMesh(deck);
   argine::MaterialPoints points = argine::seedPoints(deck, mesh);
-  argine::initialisePointState(deck.materials, points);
-  hydrostaticProfile(deck.materials, points);
+  (void)argine::initialisePoints(deck, mesh, points);  // the deck's water table at 0.2 m
 
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();

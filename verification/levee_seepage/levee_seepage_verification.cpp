@@ -59,28 +59,6 @@ constexpr Real kWaterTable = 0.2;  // initial water table (m)
 constexpr Real kElement = 0.05;    // element size (m)
 constexpr Real kNearSlope = 0.03;  // points this close to the slope count as on it (m)
 
-/// p_L = rho_L g (0.2 - y) at every point, with rho_L, S_L, k and M_L to match (4.13, 4.47).
-void hydrostaticProfile(const std::vector<argine::MaterialSpec>& materials,
-                        argine::MaterialPoints& points) {
-  const argine::MaterialTable table(materials);
-  const auto materials_m = table.materials();
-  const argine::MaterialPoints pts = points;
-  const Real g = argine::kStandardGravity;
-  Kokkos::parallel_for(
-      "hydrostatic_profile", Kokkos::RangePolicy<argine::ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p) {
-        const argine::PointMaterial& material = materials_m(pts.material(p));
-        const Real pressure = material.liquid.density * g * (kWaterTable - pts.position(p, 1));
-        const Real density = argine::liquidDensity(material.liquid, pressure);
-        const argine::LiquidState state = argine::liquidState(material, pressure);
-        pts.pressure_liquid(p) = pressure;
-        pts.density_liquid(p) = density;
-        pts.saturation(p) = state.saturation;
-        pts.conductivity(p) = state.conductivity;
-        pts.mass_liquid(p) = pts.porosity(p) * state.saturation * density * pts.volume(p);
-      });
-}
-
 struct PointRows {
   std::vector<Real> x, y, p, s;
 };
@@ -157,7 +135,7 @@ int run(int argc, char** argv) {
   // mesh, and enough for a plane fit on the study's coarser meshes.
   const Real section_strip = std::max(kNearSlope, 0.6 * deck.mesh.generator.element_size);
 
-  av::HydraulicRun run(deck, hydrostaticProfile);
+  av::HydraulicRun run(deck);  // the deck starts from the water table (Initialisation)
   std::ofstream sections(output + "/" + tag + "_sections.csv");
   sections << "time,section,x,y,pressure,saturation\n";
   std::ofstream field(output + "/" + tag + "_field.csv");

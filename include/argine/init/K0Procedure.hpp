@@ -19,6 +19,7 @@
 /// and rho_L = rho_L0 exp(p_L/K_L) (4.13), M_L = n S_L rho_L V (4.47).
 /// The hydrostatic profile uses rho_L0 (the compressibility changes it by p_L/K_L < 1e-4).
 
+#include <string>
 #include <vector>
 
 #include "argine/core/Types.hpp"
@@ -79,5 +80,19 @@ class K0Profile {
 /// Sets p_L, rho_L, S_L, k, M_L and sigma' of every point by the K0 procedure (after
 /// initialisePointState, which set masses, porosity and zeroed the kinematics).
 void applyK0Procedure(const K0Profile& profile, MaterialPoints& points);
+
+/// Sets p_L = pressure[p] and with it rho_L (4.13), S_L and k (SWRC, HCC) and M_L = n S_L
+/// rho_L V (4.47) of every liquid-carrying point (dry points are left alone): the liquid
+/// state of the K0 procedure and of the pore-pressure initialisation (P10).
+void setPointLiquidPressures(const MaterialTable& table, const std::vector<Real>& pressure,
+                             MaterialPoints& points);
+
+/// The pore-pressure initialisation (deck `Initialisation/Method: pore pressure`, P10): p_L
+/// of every point from the table (y, p_L) or hydrostatic from the phreatic surface, rho_L0 g
+/// (y_ph(x) - y), capped at the maximum suction, as the K0 procedure's p_L; the stress stays
+/// each material's Initial State. Returns a description for the log.
+std::string applyPorePressure(const InitialisationSpec& spec,
+                              const std::vector<MaterialSpec>& materials, Real gravity,
+                              MaterialPoints& points);
 
 }  // namespace argine

@@ -275,10 +275,14 @@ struct StageSpec {
 ///            between the ground surface and the point, Bishop sigma'_yy, sigma'_xx = K0
 ///            sigma'_yy with each material's Initial State K0 (init/K0Procedure.hpp).
 struct InitialisationSpec {
-  enum class Method { Uniform, K0Procedure } method = Method::Uniform;
+  /// PorePressure (P10): p_L from a phreatic surface or a table, the stress as each
+  /// material's Initial State (no K0 stress).
+  enum class Method { Uniform, K0Procedure, PorePressure } method = Method::Uniform;
   std::vector<std::array<Real, 2>> ground_surface;    ///< (x, y) vertices, x increasing (m)
   std::vector<std::array<Real, 2>> phreatic_surface;  ///< (m); empty: each material's uniform p_L
   Real max_suction = -1;                              ///< (Pa); < 0: no cap (Fig. 4.7 b)
+  /// PorePressure: (y (m), p_L (Pa)) pairs, y increasing; empty: from the phreatic surface.
+  std::vector<std::array<Real, 2>> pore_pressure_table;
 };
 
 // ---------------------------------------------------------------- probes (P4)

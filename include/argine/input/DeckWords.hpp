@@ -150,6 +150,7 @@ inline constexpr DeckWord<bool> kTimeStepModeWords[] = {
 inline constexpr DeckWord<InitialisationSpec::Method> kInitialisationWords[] = {
     {"uniform", InitialisationSpec::Method::Uniform},
     {"K0 procedure", InitialisationSpec::Method::K0Procedure},
+    {"pore pressure", InitialisationSpec::Method::PorePressure},
 };
 
 inline constexpr DeckWord<SectionProbeSpec::Kind> kSectionWords[] = {
