@@ -248,7 +248,9 @@ ListSchema lockingMitigationKeys() {
                             "the piezometric pressure p_L + rho_L g y at alpha k/g (capped for "
                             "stability); removes the Tri3 one-pressure-per-element checkerboard "
                             "of the saturated zone, conserves the liquid mass (doc/theory.md); "
-                            "0: off (the thesis)")
+                            "it also acts in the unsaturated zone and harms infiltration there "
+                            "(doc/theory.md Sec. 3.3.5, Caution): leave it off for wetting "
+                            "fronts; 0: off (the thesis)")
                   .atLeast(0)
                   .byDefault(0.0));
   return locking;
