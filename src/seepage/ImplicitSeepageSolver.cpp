@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "SeepageLinearSystem.hpp"
 #include "argine/core/Error.hpp"
@@ -586,7 +587,8 @@ SeepageStepResult ImplicitSeepageSolver::step(Real dt) {
 void ImplicitSeepageSolver::advanceTo(Real end) {
   Impl& s = *impl_;
   const Real tolerance = 1e-12 * std::max<Real>(std::fabs(end), 1);
-  std::vector<Real> start;
+  // The step's start and its increments: buffers kept across steps (no allocation a step).
+  std::vector<Real> start, increment;
   while (s.time < end - tolerance) {
     const Real planned =
         s.settings.adaptive ? std::min(s.next_step, s.settings.max_step) : s.settings.initial_step;
@@ -605,7 +607,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
     }
     if (!s.settings.adaptive) continue;
     // The time error needs the previous step's nodal rate (SeepageStepControl.hpp).
-    std::vector<Real> increment(s.p.size());
+    increment.resize(s.p.size());
     for (std::size_t i = 0; i < increment.size(); ++i) increment[i] = s.p[i] - start[i];
     SeepageStepOutcome outcome;
     outcome.dt = dt;
@@ -613,7 +615,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
     outcome.max_saturation_change = result.max_saturation_change;
     if (s.last_step > 0)
       outcome.time_error = seepageTimeError(dt, increment, s.last_step, s.last_increment);
-    s.last_increment = std::move(increment);
+    std::swap(s.last_increment, increment);  // increment's storage serves the next step
     s.last_step = dt;
     if (dt < planned * (1 - 1e-9)) continue;  // cut to land on `end`: keep the planned step
     s.next_step = nextSeepageStep(outcome, s.settings);
