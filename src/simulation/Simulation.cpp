@@ -458,15 +458,18 @@ void Simulation::openBoundaryFluxLog() {
     boundary_flux_ = std::make_unique<CsvWriter>(path, columns);
 }
 
+std::size_t Simulation::fluxColumn(const std::string& name) const {
+  return static_cast<std::size_t>(std::find(flux_names_.begin(), flux_names_.end(), name) -
+                                  flux_names_.begin());
+}
+
 void Simulation::accumulateBoundaryFluxes() {
   if (!boundary_flux_) return;
   std::fill(flux_last_step_.begin(), flux_last_step_.end(), 0.0);
   const auto& conditions = solver_->hydraulicConditions().conditions();
   const auto& volumes = solver_->boundaryFluxVolumes();
   for (std::size_t c = 0; c < conditions.size(); ++c) {
-    const auto k = static_cast<std::size_t>(
-        std::find(flux_names_.begin(), flux_names_.end(), conditions[c].name) -
-        flux_names_.begin());
+    const std::size_t k = fluxColumn(conditions[c].name);
     flux_last_step_[k] = volumes[c];
     flux_cumulative_[k] += volumes[c];
   }
@@ -482,8 +485,7 @@ void Simulation::accumulateImplicitBoundaryFluxes(const std::vector<std::string>
   std::fill(flux_last_step_.begin(), flux_last_step_.end(), 0.0);
   const Real density = solver_->referenceLiquidDensity();
   for (std::size_t c = 0; c < names.size(); ++c) {
-    const auto k = static_cast<std::size_t>(
-        std::find(flux_names_.begin(), flux_names_.end(), names[c]) - flux_names_.begin());
+    const std::size_t k = fluxColumn(names[c]);
     if (k == flux_names_.size()) continue;  // (not a hydraulic condition: carries nothing)
     flux_last_step_[k] = totals.condition_inflow_last_step[c] / density;
     flux_cumulative_[k] += (totals.condition_inflow[c] - counted[c]) / density;

@@ -81,6 +81,8 @@ class Simulation {
   void writeDiagnostics(const MaterialPoints& points);  ///< points: all (gathered) points
   // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
   void openBoundaryFluxLog();
+  /// The index of condition `name` in flux_names_ (flux_names_.size() when absent).
+  std::size_t fluxColumn(const std::string& name) const;
   void accumulateBoundaryFluxes();
   void accumulateImplicitBoundaryFluxes(const std::vector<std::string>& names,
                                         const SeepageTotals& totals, std::vector<Real>& counted);
