@@ -244,13 +244,13 @@ ListSchema lockingMitigationKeys() {
                               "saturated points")
                   .byDefault(std::string("none")));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
-                            "alpha: each step a point exchanges liquid with the nodal average of "
-                            "the piezometric pressure p_L + rho_L g y at alpha k/g (capped for "
-                            "stability); removes the Tri3 one-pressure-per-element checkerboard "
-                            "of the saturated zone, conserves the liquid mass (doc/theory.md); "
-                            "it also acts in the unsaturated zone and harms infiltration there "
-                            "(doc/theory.md Sec. 3.3.5, Caution): leave it off for wetting "
-                            "fronts; 0: off (the thesis)")
+                            "alpha: each step a point exchanges liquid at alpha k/g (capped for "
+                            "stability) with planes of the piezometric pressure p_L + rho_L g y "
+                            "through the node centres; removes the Tri3 "
+                            "one-pressure-per-element checkerboard of the saturated zone, "
+                            "leaves any linear head field alone (steady unsaturated flow "
+                            "included) and conserves the liquid mass (doc/theory.md Sec. "
+                            "3.3.5); 0: off (the thesis)")
                   .atLeast(0)
                   .byDefault(0.0));
   return locking;

@@ -44,13 +44,15 @@ void AveragingScratch::compensate(bool on) {
 namespace {
 
 /// Calls f(std::integral_constant<int, n>) with n = `channels` for the counts the solver uses
-/// (1 and 3: the loops over the channels unrolled), else n = 0 (use `channels` at run time).
+/// (1, 3 and 8: the loops over the channels unrolled), else n = 0 (use `channels` at run time).
 template <class Function>
 void withChannelCount(int channels, Function&& f) {
   if (channels == 1)
     f(std::integral_constant<int, 1>{});
   else if (channels == 3)
     f(std::integral_constant<int, 3>{});
+  else if (channels == 8)
+    f(std::integral_constant<int, 8>{});
   else
     f(std::integral_constant<int, 0>{});
 }
@@ -142,9 +144,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
 
 }  // namespace
 
-void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
-                        const ActiveNodes& active, AveragingScratch& scratch,
-                        NodalExchange* exchange) {
+void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
+                    const ActiveNodes& active, AveragingScratch& scratch, NodalExchange* exchange) {
   const auto active_nodes = active.nodes();
   const int columns = 2 * scratch.channels();
   const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
@@ -176,6 +177,12 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
   } else if (exchange) {
     exchange->sum({nodalField(node_sums)});
   }
+}
+
+void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
+                        const ActiveNodes& active, AveragingScratch& scratch,
+                        NodalExchange* exchange) {
+  sumPointValues(points, shapes, active, scratch, exchange);
   withShapeFamily(shapes, [&](auto family) {
     withChannelCount(scratch.channels(), [&](auto n) {
       gatherAverages<decltype(family), decltype(n)::value>(points, shapes, scratch);

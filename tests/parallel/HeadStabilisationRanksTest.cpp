@@ -1,8 +1,9 @@
-// The liquid head stabilisation (LiquidHeadStabilisation.hpp) with the two triangles of a
-// square on different ranks: the node averages on the shared diagonal need both ranks' sums,
-// and each rank must find the one-rank hand values of
-// LiquidHeadStabilisation.TwoTrianglesByHand. Under `mpiexec -n 2` (parallel_two_ranks) each
-// rank holds one triangle; on one rank the test is the one-rank case again.
+// The liquid head stabilisation (LiquidHeadStabilisation.hpp) with the eight triangles of four
+// squares on two ranks: the node planes on the shared nodes need both ranks' sums, and each
+// rank must find the one-rank hand values of
+// LiquidHeadStabilisation.CheckerboardOnFourSquaresByHand. Under `mpiexec -n 2`
+// (parallel_two_ranks) each rank holds one triangle; on one rank the test is the one-rank case
+// again.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -16,27 +17,30 @@ namespace {
 
 using test::hostCopy;
 
-TEST(HeadStabilisationRanks, TwoTrianglesOnTwoRanksAsOnOneRank) {
-  test::HeadScene scene(1, 1, 1.0, 0.1);
-  const RankDecomposition ranks(MPI_COMM_WORLD, scene.mesh, {1.0, 1.0});
-  if (ranks.size() == 2) {
-    ASSERT_NE(ranks.elementOwners()[0], ranks.elementOwners()[1]);
+TEST(HeadStabilisationRanks, FourSquaresOnTwoRanksAsOnOneRank) {
+  test::HeadScene scene(2, 2, 1.0, 0.1);
+  const RankDecomposition ranks(MPI_COMM_WORLD, scene.mesh, std::vector<Real>(8, 1.0));
+  if (ranks.size() == 2) {  // both ranks hold triangles
+    int first = 0;
+    for (const int owner : ranks.elementOwners()) first += owner == 0;
+    ASSERT_GT(first, 0);
+    ASSERT_LT(first, 8);
   }
   keepOwnedPoints(ranks, scene.points);
   evaluatePointShapes(scene.mesh, scene.points, scene.shapes);
   scene.rates.allocate(scene.points.count);
   scene.active.rebuild(scene.mesh, scene.points, ranks.sharedNodeView());
-  const auto id = hostCopy(scene.points.id);
-  int q = 0;
-  scene.setPressure([&](Real, Real) { return id(q++) == 0 ? 4000.0 : 1000.0; });
+  scene.setPressure([](Real x, Real y) { return 2500.0 + 1500.0 * test::checkerboardSign(x, y); });
   NodalExchange exchange(ranks);
   const Real dt = 1e-3, conductance = 0.1 * test::kConductivity / 9.81;
   const std::vector<Real> change = scene.massChanges(dt, 0.0, &exchange);
+  const auto position = hostCopy(scene.points.position);
   Real total = 0;
   for (int p = 0; p < scene.points.count; ++p) {
-    // Uncapped, equal conductances: dM = -+ dt g (4000 - 1000) / 3 (the one-rank test).
-    const Real expected = (id(p) == 0 ? -1 : 1) * dt * conductance * 3000.0 / 3;
-    EXPECT_NEAR(change[p], expected, 1e-18) << "point " << id(p);
+    const Real x = position(p, 0), y = position(p, 1);
+    const Real expected = test::fourSquaresHandChange(x, y, dt * conductance);
+    EXPECT_NEAR(change[p], expected, 1e-6 * dt * conductance * 1500.0)
+        << "point at " << x << ", " << y;
     total += change[p];
   }
   MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_DOUBLE, MPI_SUM, ranks.comm());

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -64,8 +65,9 @@ inline MaterialPoints centroidPoints(const Mesh& mesh) {
   return points;
 }
 
-/// Tri3 mesh of nx x ny squares of side `size`, one point per triangle at its centroid,
-/// van Genuchten soil (p_ref 2 kPa, lambda 0.5), liquid state set from p_L(x, y).
+/// Tri3 mesh of nx x ny squares of side `size`, one point per triangle at its centroid (or
+/// the three seeded points of each triangle), van Genuchten soil (p_ref 2 kPa, lambda 0.5),
+/// conductivity constant (or another model), liquid state set from p_L(x, y).
 struct HeadScene {
   Mesh mesh;
   MaterialPoints points;
@@ -73,9 +75,10 @@ struct HeadScene {
   PointShapes shapes;
   PointRates rates;
   ActiveNodes active;
-  HeadScene(int nx, int ny, Real size, Real alpha)
+  HeadScene(int nx, int ny, Real size, Real alpha, bool three_per_triangle = false,
+            ConductivityModel conductivity = ConductivityModel::Constant)
       : mesh(test::rectangleMesh(nx, ny, nx * size, ny * size, ElementType::Tri3)),
-        points(centroidPoints(mesh)) {
+        points(three_per_triangle ? test::seedUniform(mesh) : centroidPoints(mesh)) {
     MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 1e7, 0.3, kPorosity,
                                               kConductivity, kBulk);
     soil.retention.model = RetentionModel::VanGenuchten;
@@ -83,6 +86,8 @@ struct HeadScene {
     soil.retention.lambda = 0.5;
     soil.retention.saturation_min = 0.1;
     soil.retention.saturation_max = 1;
+    soil.conductivity.model = conductivity;  // Mualem: lambda* 0.5 of S_e
+    soil.conductivity.use_effective_saturation = true;
     soil.locking.head_stabilisation = alpha;
     table = MaterialTable({soil});
     evaluatePointShapes(mesh, points, shapes);
@@ -136,5 +141,32 @@ struct HeadScene {
     return kPorosity * volume(q) * rho(q) / kBulk;
   }
 };
+
+/// The checkerboard of the four-squares hand test (HeadScene(2, 2, 1.0, alpha)): + below
+/// each cell's rising diagonal, - above it.
+inline int checkerboardSign(Real x, Real y) {
+  return x - std::floor(x) > y - std::floor(y) ? 1 : -1;
+}
+/// The hand value of LiquidHeadStabilisation.CheckerboardOnFourSquaresByHand: p_L 2500 +-
+/// 1500 Pa (checkerboardSign), uncapped equal conductances g, no gravity. Node centres
+/// (m_i; x_i): the four corners their own points' (4000 or 1000 at the point), the edge
+/// middles the means of three points (3000 or 2000; (11/9, 4/9) and its mirror images), the
+/// centre and the two diagonal corners 2500 at (1, 1), (1/2, 1/2), (3/2, 3/2). The gradients
+/// through the centres: (4500, -4500)/7 Pa/m in the six triangles with a diagonal corner or
+/// the centre, (1800, -1800) in the two at the lone corners (2, 0) and (0, 2); the node
+/// slopes their means: (4500, -4500)/7 at the diagonal nodes, (7200, -7200)/7 at the edge
+/// middles, (1800, -1800) at the lone corners. The points' phi_p minus their node planes
+/// (Pa), by position (3x, 3y); the change is -dt g times it (kg).
+inline Real fourSquaresHandChange(Real x, Real y, Real dt_conductance) {
+  const int i = static_cast<int>(std::lround(3 * x)), j = static_cast<int>(std::lround(3 * y));
+  Real residual = 0;
+  if ((i == 2 && j == 1) || (i == 5 && j == 4)) residual = 9400.0 / 7;
+  if ((i == 1 && j == 2) || (i == 4 && j == 5)) residual = -9400.0 / 7;
+  if (i == 5 && j == 1) residual = 2000.0 / 7;
+  if (i == 1 && j == 5) residual = -2000.0 / 7;
+  if (i == 4 && j == 2) residual = -1900.0;
+  if (i == 2 && j == 4) residual = 1900.0;
+  return -dt_conductance * residual;
+}
 
 }  // namespace argine::test

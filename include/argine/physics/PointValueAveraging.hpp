@@ -57,6 +57,12 @@ struct AveragingScratch {
   bool compensated() const { return node_lo[0].extent(0) > 0; }
 };
 
+/// The element and node sums of every channel (element_sums, node_sums), complete over the
+/// ranks and folded when compensated: the first half of averagePointValues, for a caller that
+/// combines the channels' node averages itself (LiquidHeadStabilisation's linear fit).
+void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
+                    const ActiveNodes& active, AveragingScratch& scratch, NodalExchange* exchange);
+
 /// Replaces value_pc(p, c) by its element or nodal average (file comment of the header) at
 /// the points with mode_pc(p, c) != none, for every channel c of `scratch`. Elements and
 /// nodes see only the points of the same mode in the same channel. On several ranks
