@@ -48,7 +48,7 @@ struct ImplicitSeepageSolver::Impl {
   // Per liquid point, refreshed once per step (old level) and once per Picard iteration
   // (current iterate): the SWRC/HCC are evaluated once per point and iteration, not once per
   // term (residual storage, residual flux, matrix).
-  std::vector<Real> point_p_old, point_s_old, point_p, point_mobility;
+  std::vector<Real> point_p_old, point_s_old, point_rho_old, point_p, point_mobility;
   // The hand-over from the points: the nodal start is the L2 projection of their p_L, which
   // stores a slightly different liquid mass than they hold unless p_L is linear. Until the
   // first accepted step the old level is the points' own p_L (pressure_from_points, per
@@ -121,14 +121,17 @@ struct ImplicitSeepageSolver::Impl {
     return out;
   }
 
-  /// S_L at the old level of every liquid point (once per step).
+  /// p_L, S_L and rho_L at the old level of every liquid point (once per step).
   void cacheOldLevel(const std::vector<Real>& old) {
     point_p_old.resize(liquid_points.size());
     point_s_old.resize(liquid_points.size());
+    point_rho_old.resize(liquid_points.size());
     for (std::size_t i = 0; i < liquid_points.size(); ++i) {
       const Point& point = liquid_points[i];
+      const PointMaterial& mat = material(point);
       point_p_old[i] = old_level_from_points ? pressure_from_points[i] : interpolate(point, old);
-      point_s_old[i] = saturationAndConductivity(material(point), point_p_old[i]).saturation;
+      point_s_old[i] = saturationOfPressure(mat, point_p_old[i]);
+      point_rho_old[i] = liquidDensity(mat.liquid, point_p_old[i]);
     }
   }
 
@@ -148,15 +151,18 @@ struct ImplicitSeepageSolver::Impl {
       const PointMaterial& mat = material(point);
       const Real pressure = interpolate(point, nodal);
       const LiquidState state = saturationAndConductivity(mat, pressure);
+      const Real rho_old = point_rho_old[i];
+      const Real density_change = liquidDensityChange(mat, pressure, point_p_old[i], rho_old);
+      const Real density = rho_old + density_change;  // rho_L(p_L), 4.13
       point_p[i] = pressure;
-      point_mobility[i] = darcyMobilityFrom(mat, pressure, state.conductivity);
+      point_mobility[i] = darcyMobilityOf(mat, density, state.conductivity);
       const Real change =
           point.porosity * point.volume *
-          liquidContentChangeFrom(mat, pressure, state.saturation, point_p_old[i], point_s_old[i]);
+          liquidContentChangeOf(state.saturation, point_s_old[i], rho_old, density_change);
       Real local[kMaxElementNodes], f[kMaxElementNodes] = {0, 0, 0, 0};
       for (int a = 0; a < nodes_per_element; ++a) local[a] = nodal[point.dof[a]];
       addPointFluxVector(point.shape, nodes_per_element, local, point.volume * point_mobility[i],
-                         liquidDensity(mat.liquid, pressure) * gravity, f);
+                         density * gravity, f);
       for (int a = 0; a < nodes_per_element; ++a)
         if (system->owns(point.dof[a])) {
           storage_out[point.dof[a]] += point.shape.value[a] * change;
@@ -551,10 +557,12 @@ SeepageStepResult ImplicitSeepageSolver::Impl::step(Real dt) {
   for (std::size_t i = 0; i < liquid_points.size(); ++i) {
     const Point& point = liquid_points[i];
     const PointMaterial& mat = material(point);
-    const Real p_new = interpolate(point, p), p_prev = point_p_old[i];
-    storage_change += point.porosity * point.volume * liquidContentChange(mat, p_new, p_prev);
-    max_ds = std::max(max_ds, std::fabs(saturationAndConductivity(mat, p_new).saturation -
-                                        saturationAndConductivity(mat, p_prev).saturation));
+    // The old level's p_L, S_L and rho_L as cached for the step: one SWRC per point here.
+    const Real p_new = interpolate(point, p), s_new = saturationOfPressure(mat, p_new);
+    storage_change += point.porosity * point.volume *
+                      liquidContentChangeFrom(mat, p_new, s_new, point_p_old[i], point_s_old[i],
+                                              point_rho_old[i]);
+    max_ds = std::max(max_ds, std::fabs(s_new - point_s_old[i]));
   }
   result.storage_change = storage_change;
   result.max_saturation_change = max_ds;

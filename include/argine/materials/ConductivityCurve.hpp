@@ -44,11 +44,11 @@ KOKKOS_INLINE_FUNCTION Real conductivitySaturation(const ConductivitySpec& spec,
 KOKKOS_INLINE_FUNCTION Real relativeConductivityOfSaturation(const ConductivitySpec& spec, Real s) {
   switch (spec.model) {
     case ConductivityModel::Hillel:  // Eq. 4.30
-      return kmath::pow(s, spec.hillel_exponent);
+      return kmath::powKnown(s, spec.hillel_exponent);
     case ConductivityModel::Mualem: {  // Eq. 4.31
       if (s <= 0) return 0;
       const Real lam = spec.mualem_lambda;
-      const Real w = 1 - kmath::pow(1 - kmath::pow(s, 1 / lam), lam);
+      const Real w = 1 - kmath::powKnown(1 - kmath::powKnown(s, 1 / lam), lam);
       return kmath::sqrt(s) * w * w;
     }
     case ConductivityModel::Constant:
@@ -64,15 +64,15 @@ KOKKOS_INLINE_FUNCTION Real relativeConductivitySaturationDerivative(const Condu
                                                                      Real s) {
   switch (spec.model) {
     case ConductivityModel::Hillel:
-      return spec.hillel_exponent * kmath::pow(s, spec.hillel_exponent - 1);
+      return spec.hillel_exponent * kmath::powKnown(s, spec.hillel_exponent - 1);
     case ConductivityModel::Mualem: {
       if (s <= 0 || s >= 1) return 0;
       const Real lam = spec.mualem_lambda;
-      const Real u = kmath::pow(s, 1 / lam);
-      const Real w = 1 - kmath::pow(1 - u, lam);
+      const Real u = kmath::powKnown(s, 1 / lam);
+      const Real w = 1 - kmath::powKnown(1 - u, lam);
       // d/dS [S^(1/2) w^2] = w^2 / (2 sqrt(S)) + 2 sqrt(S) w dw/dS,
       // dw/dS = (1 - u)^(lam - 1) S^(1/lam - 1).
-      const Real dw = kmath::pow(1 - u, lam - 1) * u / s;
+      const Real dw = kmath::powKnown(1 - u, lam - 1) * u / s;
       return w * w / (2 * kmath::sqrt(s)) + 2 * kmath::sqrt(s) * w * dw;
     }
     case ConductivityModel::Constant:

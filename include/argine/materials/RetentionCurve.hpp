@@ -39,8 +39,8 @@ KOKKOS_INLINE_FUNCTION VanGenuchtenTerms vanGenuchtenTerms(const RetentionSpec& 
   VanGenuchtenTerms t;
   t.m = 1 / (1 - spec.lambda);
   t.x = suction / spec.reference_pressure;
-  t.xm = kmath::pow(t.x, t.m);
-  t.power = kmath::pow(1 + t.xm, -spec.lambda);
+  t.xm = kmath::powKnown(t.x, t.m);
+  t.power = kmath::powKnown(1 + t.xm, -spec.lambda);
   return t;
 }
 /// Eq. 4.28: S_L = S_min + (S_max - S_min) (1 + x^m)^(-lambda).
@@ -126,7 +126,7 @@ KOKKOS_INLINE_FUNCTION Real suctionFromSaturation(const RetentionSpec& spec, Rea
       // S_e^(-1/lambda) - 1 = (s/p_ref)^(1/(1-lambda))
       if (s_e <= 0) return kmath::infinity();
       return spec.reference_pressure *
-             kmath::pow(kmath::pow(s_e, -1 / spec.lambda) - 1, 1 - spec.lambda);
+             kmath::powKnown(kmath::powKnown(s_e, -1 / spec.lambda) - 1, 1 - spec.lambda);
     case RetentionModel::Gardner:
       if (s_e <= 0 || spec.gardner_alpha <= 0) return kmath::infinity();
       return -kmath::log(s_e) / spec.gardner_alpha;

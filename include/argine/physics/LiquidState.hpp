@@ -49,6 +49,13 @@ struct LiquidState {
   Real conductivity = 0;                   ///< k (m/s)
 };
 
+/// S_L of a liquid-carrying material at p_L alone (1 unless unsaturated): the SWRC of
+/// saturationAndConductivity without the HCC.
+KOKKOS_INLINE_FUNCTION Real saturationOfPressure(const PointMaterial& material, Real pressure) {
+  if (material.phase != PhaseModel::Unsaturated) return 1;
+  return saturation(material.retention, suctionOfPressure(pressure));
+}
+
 /// S_L and k of a liquid-carrying material at p_L, what a point stores (the derivative is
 /// left 0: it costs two more pow calls per unsaturated point, and the point update does not
 /// need it). A saturated material skips the retention curve (S_L = 1, k = k_sat); an
@@ -61,7 +68,7 @@ KOKKOS_INLINE_FUNCTION LiquidState saturationAndConductivity(const PointMaterial
     return state;
   }
   const Real suction = suctionOfPressure(pressure);
-  state.saturation = saturation(material.retention, suction);
+  state.saturation = saturationOfPressure(material, pressure);
   state.conductivity =
       conductivityAt(material.conductivity, material.retention, suction, state.saturation);
   return state;

@@ -41,12 +41,28 @@ KOKKOS_INLINE_FUNCTION Real liquidContent(const PointMaterial& material, Real pr
 ///   S1 rho1 - S0 rho0 = S1 (rho1 - rho0) + (S1 - S0) rho0.
 /// The same with the saturations S_L(p_new), S_L(p_old) already evaluated (the implicit
 /// solver keeps S_L(p_old) for the whole step and S_L(p_new) for the whole iteration).
+/// rho_L(p_new) - rho_L(p_old) = rho_old expm1((p_new - p_old)/K_L) (4.13), with rho_old =
+/// rho_L(p_old); rho_old plus it is rho_L(p_new) without another exp.
+KOKKOS_INLINE_FUNCTION Real liquidDensityChange(const PointMaterial& material, Real p_new,
+                                                Real p_old, Real rho_old) {
+  return rho_old * Kokkos::Experimental::expm1((p_new - p_old) / material.liquid.bulk_modulus);
+}
+/// The content change from the saturations, rho_old and the density change.
+KOKKOS_INLINE_FUNCTION Real liquidContentChangeOf(Real s_new, Real s_old, Real rho_old,
+                                                  Real density_change) {
+  return s_new * density_change + (s_new - s_old) * rho_old;
+}
+/// The same with rho_L(p_old) as well (the implicit solver keeps it for the whole step).
+KOKKOS_INLINE_FUNCTION Real liquidContentChangeFrom(const PointMaterial& material, Real p_new,
+                                                    Real s_new, Real p_old, Real s_old,
+                                                    Real rho_old) {
+  return liquidContentChangeOf(s_new, s_old, rho_old,
+                               liquidDensityChange(material, p_new, p_old, rho_old));
+}
 KOKKOS_INLINE_FUNCTION Real liquidContentChangeFrom(const PointMaterial& material, Real p_new,
                                                     Real s_new, Real p_old, Real s_old) {
-  const Real rho_old = liquidDensity(material.liquid, p_old);
-  const Real density_change =
-      rho_old * Kokkos::Experimental::expm1((p_new - p_old) / material.liquid.bulk_modulus);
-  return s_new * density_change + (s_new - s_old) * rho_old;
+  return liquidContentChangeFrom(material, p_new, s_new, p_old, s_old,
+                                 liquidDensity(material.liquid, p_old));
 }
 
 KOKKOS_INLINE_FUNCTION Real liquidContentChange(const PointMaterial& material, Real p_new,
@@ -86,10 +102,14 @@ KOKKOS_INLINE_FUNCTION Real storageSlope(const PointMaterial& material, Real pre
 /// Darcy mass mobility m = rho_L k / (rho_L0 g_k) (s): the mass flux is -m (grad p_L +
 /// rho_L g e_y) (kg/m^2/s). k from the HCC at p_L, g_k = 9.81 as in the HCC's k_sat.
 /// The same with k already evaluated at p_L.
+/// The same with rho_L(p_L) evaluated too.
+KOKKOS_INLINE_FUNCTION Real darcyMobilityOf(const PointMaterial& material, Real density,
+                                            Real conductivity) {
+  return density * conductivity / (material.liquid.density * kStandardGravity);
+}
 KOKKOS_INLINE_FUNCTION Real darcyMobilityFrom(const PointMaterial& material, Real pressure,
                                               Real conductivity) {
-  return liquidDensity(material.liquid, pressure) * conductivity /
-         (material.liquid.density * kStandardGravity);
+  return darcyMobilityOf(material, liquidDensity(material.liquid, pressure), conductivity);
 }
 
 KOKKOS_INLINE_FUNCTION Real darcyMobility(const PointMaterial& material, Real pressure) {
