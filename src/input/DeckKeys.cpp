@@ -253,6 +253,16 @@ ListSchema lockingMitigationKeys() {
                             "3.3.5); 0: off (the thesis)")
                   .atLeast(0)
                   .byDefault(0.0));
+  locking.add(KeySpec::boolean("Intra-Element Seepage",
+                               "the points of one element exchange liquid by Darcy flow (their "
+                               "own k) towards their common piezometric pressure p_L + rho_L g "
+                               "y, implicit in time; the element's liquid mass is kept. The "
+                               "grid sees one pressure per linear triangle, so nothing else "
+                               "relaxes pressure differences between the points of an element, "
+                               "and a sliding body pumps saturated and unsaturated neighbours "
+                               "apart (+300 / -120 kPa in the levee drawdown, issue P11; "
+                               "doc/theory.md); false: off (the thesis)")
+                  .byDefault(false));
   return locking;
 }
 

@@ -348,6 +348,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
   spec.liquid_pressure =
       deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
   spec.head_stabilisation = locking.real("Liquid Head Stabilisation");
+  spec.intra_element_seepage = locking.boolean("Intra-Element Seepage");
   return spec;
 }
 

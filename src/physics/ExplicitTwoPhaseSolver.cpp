@@ -78,6 +78,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   nodes_next_.rebuild(mesh_, points_, &shapes_, {});
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes());
+  element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
 }
 
 void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& materials) {
@@ -87,6 +88,7 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   table_ = MaterialTable(materials);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
+  element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
   setReproducibleSums(reproducible_sums_);  // the new scratch compensated as the old
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
@@ -191,6 +193,7 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
+  element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
   setReproducibleSums(reproducible_sums_);
   outflow_limit_.distribute(exchange_.get(), decomposition.comm(), mesh_.numNodes());
   keepOwnedPoints(decomposition, points_);
@@ -215,6 +218,7 @@ void ExplicitTwoPhaseSolver::setReproducibleSums(bool on) {
   }
   averaging_.compensateSums(on);
   head_stabilisation_.compensateSums(on);
+  element_seepage_.compensateSums(on);
 }
 
 Kokkos::View<const int*, MemSpace> ExplicitTwoPhaseSolver::alwaysActiveNodes() const {
@@ -463,6 +467,10 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
   // material asks for it; a held p_L takes no flux).
   if (!momentum_.liquid_with_solid)
     head_stabilisation_.apply(table_, points_, shapes_, nodes_in_use_, rates_, dt, gravity_);
+  // ---- The Darcy flow between the points of one element, which the grid cannot see
+  // (IntraElementSeepage.hpp; no-op unless a material asks for it).
+  if (!momentum_.liquid_with_solid)
+    element_seepage_.apply(table_, points_, shapes_, nodes_in_use_, rates_, dt, gravity_);
   // No point gives away more than its mobile liquid (LiquidOutflowLimit.hpp); a no-op
   // unless a point near residual saturation is asked for more.
   outflow_limited_ = outflow_limit_.apply(table_, points_, shapes_, rates_).limited_points;

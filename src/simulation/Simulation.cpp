@@ -25,6 +25,7 @@
 #include "argine/seepage/ImplicitSeepageSolver.hpp"
 #include "argine/simulation/Checkpoint.hpp"
 #include "argine/simulation/MaterialChanges.hpp"
+#include "argine/simulation/PhysicalPressureRange.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Setup.hpp"
@@ -109,6 +110,9 @@ RunSummary Simulation::run() {
   std::vector<std::string> nodal_names;
   for (const auto& field : solver_->nodalFields()) nodal_names.push_back(field.name);
   const MaterialPoints initial_points = gatheredPoints();
+  // (P11) the lowest physical p_L of each material, from the initial state (the deck's; a
+  // restart reads its checkpoint only below)
+  lowest_pressures_ = lowestPhysicalPressures(initial_points, deck_.materials);
   // (P8) A restart continues the checkpointed run's files where the checkpoint left them.
   if (!writes()) {
     // rank > 0 of a distributed run: no files
@@ -121,8 +125,8 @@ RunSummary Simulation::run() {
   const std::string diagnostics_path =
       options_.output_directory + "/" + deck_.output.name + "_diagnostics.csv";
   const std::vector<std::string> diagnostics_columns{
-      "time",        "time_step",  "kinetic_energy_solid", "kinetic_energy_liquid",
-      "liquid_mass", "lost_points"};
+      "time",        "time_step",   "kinetic_energy_solid",      "kinetic_energy_liquid",
+      "liquid_mass", "lost_points", "unphysical_pressure_points"};
   if (!writes()) {
   } else if (resume_)
     diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns,
@@ -359,11 +363,12 @@ void Simulation::writeOutput() {
 
 void Simulation::writeDiagnostics(const MaterialPoints& points) {
   if (!diagnostics_) return;
+  const Real unphysical = static_cast<Real>(countUnphysicalPressures(points));
   const auto& d = solver_->diagnostics();
   if (d.step > 0) {
     diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
                             d.kinetic_energy_liquid, d.liquid_mass,
-                            static_cast<Real>(d.lost_points)});
+                            static_cast<Real>(d.lost_points), unphysical});
     return;
   }
   // Before the first step the solver has no step sums: take them from the points, and the
@@ -375,8 +380,24 @@ void Simulation::writeDiagnostics(const MaterialPoints& points) {
       "count_lost_points", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, int& sum) { sum += pts.element(p) < 0 ? 1 : 0; }, lost);
   diagnostics_->writeRow({solver_->time(), initial_time_step_, totals.kinetic_energy_solid,
-                          totals.kinetic_energy_liquid, totals.liquid_mass,
-                          static_cast<Real>(lost)});
+                          totals.kinetic_energy_liquid, totals.liquid_mass, static_cast<Real>(lost),
+                          unphysical});
+}
+
+int Simulation::countUnphysicalPressures(const MaterialPoints& points) {
+  // (P11) the points whose p_L lies outside its physical range (PhysicalPressureRange.hpp);
+  // rank 0 holds all points here and warns, as the guards do (stderr, also with --quiet)
+  const StageSpec& stage = deck_.stages.at(std::min(stage_index_, deck_.stages.size() - 1));
+  const Real highest = largestTotalVerticalStress(points, stage.gravity, stageSurcharge(stage));
+  const PressureRangeCount count =
+      countPressuresOutsideRange(points, deck_.materials, lowest_pressures_, highest);
+  if (count.outside > 0) {
+    const std::string line =
+        "stage '" + stage.name + "': " + describePressureRange(count, solver_->time());
+    std::fprintf(stderr, "argine: warning: %s\n", line.c_str());
+    stage_log_.push_back("warning: " + line);
+  }
+  return count.outside;
 }
 
 // ---------------------------------------------------------------- issue P4

@@ -40,6 +40,8 @@ struct LockingMitigationSpec {
   IncrementAveraging liquid_pressure = IncrementAveraging::None;    ///< d p_L (saturated points)
   /// alpha of the liquid head stabilisation (physics/LiquidHeadStabilisation.hpp); 0: off
   Real head_stabilisation = 0;
+  /// Darcy exchange between the points of one element (physics/IntraElementSeepage.hpp)
+  bool intra_element_seepage = false;
 };
 
 struct LiquidSpec {

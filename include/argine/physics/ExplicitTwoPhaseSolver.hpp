@@ -71,6 +71,7 @@
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
+#include "argine/physics/IntraElementSeepage.hpp"
 #include "argine/physics/LiquidHeadStabilisation.hpp"
 #include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -328,6 +329,7 @@ class ExplicitTwoPhaseSolver {
   Real reference_liquid_density_ = 1000;
   VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
   LiquidHeadStabilisation head_stabilisation_;  ///< against the Tri3 p_L checkerboard
+  IntraElementSeepage element_seepage_;         ///< p_L differences inside an element (P11)
   LiquidOutflowLimit outflow_limit_;            ///< donor limit of the mass balance at dry points
   int outflow_limited_ = 0;                     ///< points it capped in this step
   TimeStepControl time_step_;

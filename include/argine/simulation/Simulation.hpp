@@ -136,6 +136,9 @@ class Simulation {
   Real initial_time_step_ = 0;           ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
   std::unique_ptr<RunGuards> guards_;  ///< (P8)
+  /// (P11) The points outside their physical p_L range now (warns when any), of all points.
+  int countUnphysicalPressures(const MaterialPoints& points);
+  std::vector<Real> lowest_pressures_;  ///< (P11) lowest physical p_L per material (Pa)
 
   // ---- checkpoint / restart (P8; SimulationCheckpoint.cpp, doc/checkpoints.md)
   void readRestartCheckpoint();  ///< options_.restart -> resume_ (InputError naming the file)
