@@ -50,10 +50,16 @@ StageSurcharge stageSurcharge(const StageSpec& stage) {
   return surcharge;
 }
 
-Real largestTotalVerticalStress(const MaterialPoints& points, Real gravity,
-                                const StageSurcharge& surcharge) {
-  const MaterialPoints pts = points;
+namespace {
+
+/// The located points' largest mixture density (M_S + M_L)/V and their top and bottom (centre
+/// +- half the side sqrt(V) of the point's square); top < bottom without located points.
+struct PointsExtent {
   Real density = 0, top = -kmath::infinity(), bottom = kmath::infinity();
+};
+PointsExtent pointsExtent(const MaterialPoints& points) {
+  const MaterialPoints pts = points;
+  PointsExtent e;
   Kokkos::parallel_reduce(
       "overburden_extent", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, Real& rho, Real& high, Real& low) {
@@ -66,15 +72,24 @@ Real largestTotalVerticalStress(const MaterialPoints& points, Real gravity,
         if (y + half > high) high = y + half;
         if (y - half < low) low = y - half;
       },
-      Kokkos::Max<Real>(density), Kokkos::Max<Real>(top), Kokkos::Min<Real>(bottom));
-  if (!(top >= bottom)) return 0;  // no located point
-  const Real water_above = std::max<Real>(surcharge.water_level - top, 0);
-  return gravity * (density * (top - bottom) + surcharge.water_density * water_above) +
+      Kokkos::Max<Real>(e.density), Kokkos::Max<Real>(e.top), Kokkos::Min<Real>(e.bottom));
+  return e;
+}
+
+}  // namespace
+
+Real largestTotalVerticalStress(const MaterialPoints& points, Real gravity,
+                                const StageSurcharge& surcharge) {
+  const PointsExtent e = pointsExtent(points);
+  if (!(e.top >= e.bottom)) return 0;  // no located point
+  const Real water_above = std::max<Real>(surcharge.water_level - e.top, 0);
+  return gravity * (e.density * (e.top - e.bottom) + surcharge.water_density * water_above) +
          surcharge.surface_pressure;
 }
 
 std::vector<Real> lowestPhysicalPressures(const MaterialPoints& initial,
-                                          const std::vector<MaterialSpec>& materials) {
+                                          const std::vector<MaterialSpec>& materials,
+                                          Real gravity) {
   const auto material = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), initial.material);
   const auto pressure =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), initial.pressure_liquid);
@@ -83,15 +98,19 @@ std::vector<Real> lowestPhysicalPressures(const MaterialPoints& initial,
     const int m = material(p);
     if (m >= 0 && m < static_cast<int>(lowest.size())) lowest[m] = std::min(lowest[m], pressure(p));
   }
+  const PointsExtent extent = pointsExtent(initial);
+  const Real height = extent.top >= extent.bottom ? extent.top - extent.bottom : 0;
   for (std::size_t m = 0; m < materials.size(); ++m) {
     if (materials[m].phase == PhaseModel::Dry) {
       lowest[m] = -kmath::infinity();
       continue;
     }
+    // drained to a water table at the bottom of the model: rho_L g H of suction at the top
+    lowest[m] = std::min(lowest[m], -materials[m].liquid.density * gravity * height);
     if (materials[m].phase != PhaseModel::Unsaturated) continue;
     const RetentionSpec& retention = materials[m].retention;
     const Real largest_suction = suctionFromSaturation(retention, retention.saturation_min);
-    if (std::isfinite(largest_suction)) lowest[m] = std::min(lowest[m], -largest_suction);
+    if (std::isfinite(largest_suction)) lowest[m] = std::max(lowest[m], -largest_suction);
   }
   return lowest;
 }

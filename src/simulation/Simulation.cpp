@@ -112,7 +112,10 @@ RunSummary Simulation::run() {
   const MaterialPoints initial_points = gatheredPoints();
   // (P11) the lowest physical p_L of each material, from the initial state (the deck's; a
   // restart reads its checkpoint only below)
-  lowest_pressures_ = lowestPhysicalPressures(initial_points, deck_.materials);
+  // under the strongest gravity of the deck's stages (the drained suction, the larger)
+  Real gravity = 0;
+  for (const StageSpec& stage : deck_.stages) gravity = std::max(gravity, std::fabs(stage.gravity));
+  lowest_pressures_ = lowestPhysicalPressures(initial_points, deck_.materials, gravity);
   // (P8) A restart continues the checkpointed run's files where the checkpoint left them.
   if (!writes()) {
     // rank > 0 of a distributed run: no files

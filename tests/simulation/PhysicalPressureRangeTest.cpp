@@ -86,21 +86,34 @@ TEST(PhysicalPressureRange, StageSurchargeTakesTheLargestValues) {
   EXPECT_DOUBLE_EQ(surcharge.surface_pressure, 5000.0);
 }
 
-TEST(PhysicalPressureRange, LowestPressureFromInitialStateAndRetention) {
+TEST(PhysicalPressureRange, LowestPressureFromInitialStateDrainageAndRetention) {
+  // g = 10: drained to the bottom of the 1.5 m column, -1000 x 10 x 1.5 = -15 kPa at the top
+  const Real g = 10;
   const MaterialPoints initial = column({-9810, 5000, 20000});
-  // saturated: the initial state's lowest, -9.81 kPa; positive initial pressures: 0
-  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Saturated)})[0], -9810.0);
+  // saturated: the drained -15 kPa, below the initial state's -9.81 kPa
+  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Saturated)}, g)[0], -15000.0);
+  // an initial state below that: its own lowest
   EXPECT_DOUBLE_EQ(
-      lowestPhysicalPressures(column({5000, 6000, 7000}), {soil(PhaseModel::Saturated)})[0], 0.0);
-  // linear retention: S_L reaches S_min = 0 at s = 1 / 4e-7 = 2.5 MPa, below -9.81 kPa
-  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Unsaturated)})[0], -2.5e6);
-  // van Genuchten has no largest suction: the initial state's
+      lowestPhysicalPressures(column({-20000, 6000, 7000}), {soil(PhaseModel::Saturated)}, g)[0],
+      -20000.0);
+  // no gravity, positive initial pressures: 0 (drainage to the atmosphere)
+  EXPECT_DOUBLE_EQ(
+      lowestPhysicalPressures(column({5000, 6000, 7000}), {soil(PhaseModel::Saturated)}, 0)[0],
+      0.0);
+  // linear retention reaching S_min = 0 at s = 1 / 4e-7 = 2.5 MPa: not binding, -15 kPa
+  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Unsaturated)}, g)[0],
+                   -15000.0);
+  // a steeper one, S_min at s = 1 / 1e-4 = 10 kPa: no liquid left to drain beyond, -10 kPa
+  MaterialSpec steep = soil(PhaseModel::Unsaturated);
+  steep.retention.linear_slope = 1e-4;
+  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {steep}, g)[0], -10000.0);
+  // van Genuchten has no largest suction: the drained -15 kPa
   MaterialSpec vg = soil(PhaseModel::Unsaturated);
   vg.retention.model = RetentionModel::VanGenuchten;
   vg.retention.reference_pressure = 1e4;
-  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {vg})[0], -9810.0);
+  EXPECT_DOUBLE_EQ(lowestPhysicalPressures(initial, {vg}, g)[0], -15000.0);
   // dry: not checked
-  EXPECT_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Dry)})[0],
+  EXPECT_EQ(lowestPhysicalPressures(initial, {soil(PhaseModel::Dry)}, g)[0],
             -std::numeric_limits<Real>::infinity());
 }
 

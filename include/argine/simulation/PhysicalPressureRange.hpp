@@ -19,13 +19,19 @@
 /// mass (an impact) is not in the bound; the levee slides are far from that (a 70 kPa bound
 /// against p_L up to +302 kPa, issue P11).
 ///
-/// Lower bound, per material: the smaller (more negative) of
-///  - the most negative p_L of the material's points in the initial state (after the
-///    Initialisation), or 0 if that is higher (drainage to the atmosphere, p_L = 0, is
-///    always reachable), and
-///  - -s_max of the retention curve when it has a largest suction, the suction at which it
-///    reaches S_min (the linear curve: (S_max - S_min) / a_v); van Genuchten and Gardner
-///    approach S_min only asymptotically and set no bound.
+/// Lower bound, per material: the most negative p_L that both the initial state with
+/// drainage and the retention curve allow,
+///   max( min(p_L,min,0, 0, -rho_L g H), -s_max ),
+/// p_L,min,0 the most negative p_L of the material's points in the initial state (after the
+/// Initialisation), H the height of the initial body (top to bottom of its points): without
+/// evaporation, suction grows beyond the initial state's only by drainage, and drained to a
+/// water table at the very bottom of the model the top carries rho_L g H of suction (a
+/// drawdown lowers the water table, so the initial state alone is too tight); 0 (drainage to
+/// the atmosphere) is always reachable. s_max is the suction at which the retention curve
+/// reaches S_min (the linear curve: (S_max - S_min) / a_v): past it no liquid is left to
+/// drain; van Genuchten and Gardner approach S_min only asymptotically and set no bound.
+/// Dilation of an unsaturated body could in principle raise suction further; the levee soils
+/// of the scenes have none (psi = 0).
 /// Dry materials carry no p_L and are not checked; points outside the mesh (element < 0,
 /// frozen) neither.
 
@@ -56,10 +62,10 @@ StageSurcharge stageSurcharge(const StageSpec& stage);
 Real largestTotalVerticalStress(const MaterialPoints& points, Real gravity,
                                 const StageSurcharge& surcharge);
 
-/// The lower bound (Pa) of each material (deck order) from the initial points (file
-/// comment); -infinity for dry materials.
+/// The lower bound (Pa) of each material (deck order) from the initial points under gravity
+/// `gravity` (m/s^2; file comment); -infinity for dry materials.
 std::vector<Real> lowestPhysicalPressures(const MaterialPoints& initial,
-                                          const std::vector<MaterialSpec>& materials);
+                                          const std::vector<MaterialSpec>& materials, Real gravity);
 
 /// The points outside [lowest(material), highest] and the worst of them: the one farthest
 /// outside its range.
