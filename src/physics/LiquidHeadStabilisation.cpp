@@ -2,6 +2,7 @@
 
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
+#include "argine/physics/PointLiquidExchange.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/PointRates.hpp"
@@ -11,16 +12,8 @@ namespace argine {
 
 namespace {
 
-/// The gravity with which a conductivity in m/s is defined: k / (rho_L g0) = kappa / mu_L.
-constexpr Real kConductivityGravity = 9.81;
-/// At most this share of the way to the nodal average per step (stability of the exchange).
+/// At most this share of the way to the node planes per step (stability of the exchange).
 constexpr Real kStableShare = 0.25;
-
-/// phi = p_L + rho_L0 g y (Pa), gravity acting in -y.
-KOKKOS_INLINE_FUNCTION Real piezometricPressure(const PointMaterial& material, Real pressure,
-                                                Real y, Real gravity) {
-  return pressure + material.liquid.density * gravity * y;
-}
 
 /// The channels of the node centres (phi and x, y, averaged with the weights N_i g_p) and of
 /// the node slopes (the point gradients, averaged with the same weights).
@@ -175,14 +168,8 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         conductance_p(p) = slope_weight_p(p) = 0;
         if (!carriesLiquid(material.phase) || alpha <= 0 || pts.element(p) < 0) return;
         const Real pressure = pts.pressure_liquid(p);
-        const Real ds_ds =
-            material.phase == PhaseModel::Unsaturated
-                ? saturationSuctionDerivative(material.retention, suctionOfPressure(pressure))
-                : 0;
-        const Real storage = pts.porosity(p) * pts.volume(p) *
-                             liquidContentSlope(pts.density_liquid(p), pts.saturation(p), ds_ds,
-                                                material.liquid.bulk_modulus);  // dM_L/dp_L (kg/Pa)
-        Real conductance = alpha * pts.conductivity(p) / kConductivityGravity;
+        const Real storage = pointLiquidStorage(material, pts, p);  // kg/Pa
+        Real conductance = alpha * pointDarcyConductance(pts.conductivity(p));
         if (dt * conductance > kStableShare * storage) conductance = kStableShare * storage / dt;
         if (!(conductance > 0)) return;
         conductance_p(p) = slope_weight_p(p) = conductance;
@@ -204,9 +191,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
   withShapeFamily(shapes, [&](auto family) {
     gatherNodePlanes<decltype(family)>(points, shapes, centres_, slopes_, head_p);
   });
-  const auto strain_increment_p = rates.strain_increment_p;
-  const auto flux_divergence_p = rates.content_flux_divergence_increment_p;
-  const auto divergence_p = rates.liquid_divergence_increment_p;
+  const PointRates rts = rates;
   Kokkos::parallel_for(
       "head_stabilisation_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
@@ -216,16 +201,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
         // against the node planes at the point, now in head_p.
         const Real own =
             piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
-        const Real mass_change = -dt * conductance_p(p) * (own - head_p(p));  // kg
-        if (material.mass_balance == MassBalanceForm::Complete) {
-          // M_L^{k+1} = M_L^k - V^k dt div(c w) (LiquidState.hpp): V^k from V^{k+1}.
-          const Real volumetric =
-              strain_increment_p(p, XX) + strain_increment_p(p, YY) + strain_increment_p(p, ZZ);
-          flux_divergence_p(p) -= mass_change * (1 + volumetric) / pts.volume(p);
-        } else {
-          // M_L^{k+1} = M_L^k (1 - dt div w): the same change as a relative divergence.
-          divergence_p(p) -= mass_change / pts.mass_liquid(p);
-        }
+        addPointLiquidMassChange(material, pts, rts, p, -dt * conductance_p(p) * (own - head_p(p)));
       });
 }
 

@@ -1,0 +1,56 @@
+#pragma once
+/// @file PointLiquidExchange.hpp
+/// What the exchanges of liquid between material points share (LiquidHeadStabilisation,
+/// IntraElementSeepage): the piezometric pressure that drives them, a point's liquid storage
+/// and Darcy conductance, and how an exchanged mass enters the point's mass balance.
+
+#include "argine/core/Types.hpp"
+#include "argine/physics/LiquidState.hpp"
+#include "argine/physics/MaterialTable.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/PointRates.hpp"
+
+namespace argine {
+
+/// phi = p_L + rho_L0 g y (Pa), gravity g acting in -y: the total head times rho_L0 g
+/// (thesis Eq. 4.50); uniform in a hydrostatic state.
+KOKKOS_INLINE_FUNCTION Real piezometricPressure(const PointMaterial& material, Real pressure,
+                                                Real y, Real gravity) {
+  return pressure + material.liquid.density * gravity * y;
+}
+
+/// dM_L/dp_L = n V rho_L (S_L/K_L - dS_L/ds) of point p (kg/Pa), 4.12 with 4.13.
+KOKKOS_INLINE_FUNCTION Real pointLiquidStorage(const PointMaterial& material,
+                                               const MaterialPoints& points, int p) {
+  const Real pressure = points.pressure_liquid(p);
+  const Real ds_ds =
+      material.phase == PhaseModel::Unsaturated
+          ? saturationSuctionDerivative(material.retention, suctionOfPressure(pressure))
+          : 0;
+  return points.porosity(p) * points.volume(p) *
+         liquidContentSlope(points.density_liquid(p), points.saturation(p), ds_ds,
+                            material.liquid.bulk_modulus);
+}
+
+/// The Darcy conductance k / g0 of a point's own cell (kg/(Pa s) per metre of thickness): a
+/// square of side a passes (k/g0)(a/a) dphi; g0 = kStandardGravity, the gravity with which a
+/// conductivity in m/s is defined (k / (rho_L g0) = kappa / mu_L).
+KOKKOS_INLINE_FUNCTION Real pointDarcyConductance(Real conductivity) {
+  return conductivity / kStandardGravity;
+}
+
+/// Adds `mass_change` (kg, into point p, over the step) to the step's flux divergence of the
+/// point's mass balance, before the point update: complete form, M_L^{k+1} = M_L^k - V^k dt
+/// div(c w) with V^k = points.volume(p) now (updatePointStates moves V to V^{k+1} only
+/// afterwards); simplified, M_L^{k+1} = M_L^k (1 - dt div w).
+KOKKOS_INLINE_FUNCTION void addPointLiquidMassChange(const PointMaterial& material,
+                                                     const MaterialPoints& points,
+                                                     const PointRates& rates, int p,
+                                                     Real mass_change) {
+  if (material.mass_balance == MassBalanceForm::Complete)
+    rates.content_flux_divergence_increment_p(p) -= mass_change / points.volume(p);
+  else
+    rates.liquid_divergence_increment_p(p) -= mass_change / points.mass_liquid(p);
+}
+
+}  // namespace argine
