@@ -1,0 +1,45 @@
+#pragma once
+/// @file CircleSearch.hpp
+/// The critical circle of a section: a grid of centres and, for each centre, a range of
+/// tangent elevations (radius = centre_y - tangent_y, i.e. circles tangent to horizontal
+/// lines), Bishop's F of each, then the grid repeatedly refined around the lowest F.
+
+#include <vector>
+
+#include "argine/core/Types.hpp"
+#include "argine/slopestability/Bishop.hpp"
+#include "argine/slopestability/CircularSlip.hpp"
+#include "argine/slopestability/SlopeSection.hpp"
+
+namespace argine {
+
+/// The search grid (m). Counts >= 1; a count of 1 takes the minimum.
+struct CircleSearchGrid {
+  Real centre_x_min = 0, centre_x_max = 0;
+  int centre_x_count = 11;
+  Real centre_y_min = 0, centre_y_max = 0;
+  int centre_y_count = 11;
+  Real tangent_y_min = 0, tangent_y_max = 0;
+  int tangent_count = 11;
+  /// Passes after the first: each a grid of the same counts spanning one former spacing on
+  /// either side of the best point, so the spacing shrinks by about (count - 1) / 2 a pass.
+  int refinements = 3;
+  int slice_count = 50;
+};
+
+/// The result: the critical circle, its Bishop F and slices, and the search's bookkeeping.
+struct CriticalCircle {
+  bool found = false;
+  SlipCircle circle;
+  FactorOfSafety bishop;
+  FactorOfSafety ordinary;  ///< the ordinary method on the same circle, for comparison
+  SlipMass mass;            ///< the slice table of the critical circle
+  int evaluated = 0;        ///< circles tried
+  int rejected = 0;         ///< of which no slip mass or an inadmissible F
+};
+
+/// Lowest Bishop F over the grid (see the file comment).
+CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSearchGrid& grid,
+                                    const BishopOptions& options = {});
+
+}  // namespace argine

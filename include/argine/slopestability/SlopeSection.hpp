@@ -1,0 +1,72 @@
+#pragma once
+/// @file SlopeSection.hpp
+/// The cross-section a limit-equilibrium analysis works on (P13): the ground surface, soil
+/// layers and the pore pressure, all as plain polylines in the (x, y) plane, y up, SI units
+/// (m, N/m^3, Pa, rad). Host-side data: a slope analysis evaluates a few thousand trial
+/// surfaces, not a per-point kernel, so std::vector and std::function are used freely.
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "argine/core/Types.hpp"
+
+namespace argine {
+
+/// A piecewise linear function y(x) through points with increasing x. Outside its first and
+/// last x it is continued as a constant (the end values), which is what layer tops and a
+/// phreatic line drawn to the edge of a section mean.
+struct Polyline {
+  std::vector<Real> x;  ///< abscissae (m), strictly increasing
+  std::vector<Real> y;  ///< ordinates (m), one per abscissa
+
+  Polyline() = default;
+  Polyline(std::vector<Real> xs, std::vector<Real> ys);
+
+  /// y at x: linear between the points, constant beyond the ends.
+  Real at(Real xq) const;
+  bool empty() const { return x.empty(); }
+  Real xFirst() const { return x.front(); }
+  Real xLast() const { return x.back(); }
+};
+
+/// A soil layer: its top line and Mohr-Coulomb effective strength. The layer fills the space
+/// from its top down to the top of the next layer of the section (the last layer: down to
+/// the bottom of the section).
+struct SoilLayer {
+  std::string name;
+  Polyline top;             ///< top of the layer (m); ignored for the first layer (ground)
+  Real unit_weight = 0;     ///< gamma (N/m^3), total unit weight
+  Real cohesion = 0;        ///< c' (Pa)
+  Real friction_angle = 0;  ///< phi' (rad)
+};
+
+/// The section: ground surface, layers from the top down, pore pressure.
+/// Layer tops may touch (a layer pinching out) but must not cross.
+struct SlopeSection {
+  Polyline ground;                ///< ground surface y(x) (m); slip surfaces must stay inside it
+  std::vector<SoilLayer> layers;  ///< from the top down; at least one
+  Real water_unit_weight = 9810;  ///< gamma_w (N/m^3)
+  Polyline phreatic;              ///< phreatic line h_w(x) (m); empty: dry
+  /// Pore pressure u(x, y) (Pa) given directly, e.g. interpolated from material points later;
+  /// when set it replaces the phreatic line.
+  std::function<Real(Real, Real)> pore_pressure_field;
+  /// Lowest elevation a slip surface may reach (m), e.g. a rigid base; -inf: no limit.
+  Real floor = -std::numeric_limits<Real>::infinity();
+
+  /// Index of the layer at (x, y): the deepest layer whose top lies at or above y (the first
+  /// layer when y is above every top).
+  int layerAt(Real x, Real y) const;
+
+  /// Pore pressure (Pa) at (x, y): pore_pressure_field if set, otherwise the hydrostatic
+  /// value below the phreatic line, u = gamma_w max(h_w(x) - y, 0), otherwise 0.
+  Real porePressure(Real x, Real y) const;
+
+  /// Weight per unit length of a vertical column of width `width` (m) at x between
+  /// y_bottom and y_top (N/m): width times the sum over the layers of gamma times the
+  /// thickness of the layer inside [y_bottom, y_top].
+  Real columnWeight(Real x, Real y_bottom, Real y_top, Real width) const;
+};
+
+}  // namespace argine

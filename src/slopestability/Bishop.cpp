@@ -1,0 +1,100 @@
+#include "argine/slopestability/Bishop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace argine {
+
+namespace {
+
+/// The sign that makes the driving moment sum W sin alpha non-negative: -1 mirrors a mass
+/// sliding towards +x into one sliding towards -x.
+Real slideSign(const std::vector<Slice>& slices) {
+  Real driving = 0;
+  for (const Slice& s : slices) driving += s.weight * std::sin(s.base_angle);
+  return driving < 0 ? Real(-1) : Real(1);
+}
+
+Real drivingSum(const std::vector<Slice>& slices, Real sign) {
+  Real driving = 0;
+  for (const Slice& s : slices) driving += s.weight * std::sin(sign * s.base_angle);
+  return driving;
+}
+
+}  // namespace
+
+Real bishopMAlpha(Real alpha, Real friction_angle, Real factor) {
+  return std::cos(alpha) * (1 + std::tan(alpha) * std::tan(friction_angle) / factor);
+}
+
+FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices) {
+  FactorOfSafety result;
+  const Real sign = slideSign(slices);
+  result.driving = drivingSum(slices, sign);
+  result.converged = true;
+  if (!(result.driving > 0)) return result;
+  Real resisting = 0;
+  for (const Slice& s : slices) {
+    const Real alpha = sign * s.base_angle;
+    const Real l = s.width / std::cos(alpha);
+    const Real u = std::max(s.pore_pressure, Real(0));
+    // Effective normal force W cos(alpha) - u l, not allowed to become tensile.
+    const Real normal = std::max(s.weight * std::cos(alpha) - u * l, Real(0));
+    resisting += s.cohesion * l + normal * std::tan(s.friction_angle);
+  }
+  result.value = resisting / result.driving;
+  result.admissible = true;
+  return result;
+}
+
+FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOptions& options) {
+  FactorOfSafety result;
+  const Real sign = slideSign(slices);
+  result.driving = drivingSum(slices, sign);
+  if (!(result.driving > 0)) return result;
+
+  // m_alpha > 0 for every slice needs F > F_zero = max(-tan(alpha) tan(phi')) (only slices
+  // whose base dips against the sliding direction have a bound). The plain fixed-point
+  // iteration can jump below it from a low guess (the ordinary F, for instance) and then
+  // converge to a meaningless root with m_alpha < 0; an iterate that would leave the range
+  // is replaced by the midpoint between the current F and F_zero instead.
+  Real zero_m_factor = 0;
+  for (const Slice& s : slices) {
+    zero_m_factor =
+        std::max(zero_m_factor, -std::tan(sign * s.base_angle) * std::tan(s.friction_angle));
+  }
+  Real factor = options.initial_guess;
+  if (!(factor > 0)) factor = ordinaryMethodOfSlices(slices).value;
+  if (!(factor > zero_m_factor)) factor = zero_m_factor > 0 ? 2 * zero_m_factor : Real(1);
+  for (int k = 1; k <= options.max_iterations; ++k) {
+    Real resisting = 0;
+    for (const Slice& s : slices) {
+      const Real m = bishopMAlpha(sign * s.base_angle, s.friction_angle, factor);
+      const Real u = std::max(s.pore_pressure, Real(0));
+      const Real effective = std::max(s.weight - u * s.width, Real(0));
+      resisting += (s.cohesion * s.width + effective * std::tan(s.friction_angle)) / m;
+    }
+    result.iterations = k;
+    Real next = resisting / result.driving;
+    if (!(next > zero_m_factor)) next = 0.5 * (factor + zero_m_factor);
+    const bool done = std::abs(next - factor) <= options.tolerance * factor;
+    factor = next;
+    if (done) {
+      result.converged = true;
+      break;
+    }
+  }
+  result.value = factor;
+  if (result.converged) {
+    Real min_m = std::numeric_limits<Real>::infinity();
+    for (const Slice& s : slices) {
+      min_m = std::min(min_m, bishopMAlpha(sign * s.base_angle, s.friction_angle, factor));
+    }
+    result.min_m_alpha = min_m;
+    result.admissible = min_m > options.min_m_alpha;
+  }
+  return result;
+}
+
+}  // namespace argine

@@ -1,0 +1,69 @@
+#include "argine/slopestability/CircleSearch.hpp"
+
+#include <algorithm>
+
+namespace argine {
+
+namespace {
+
+Real gridValue(Real lo, Real hi, int count, int i) {
+  return count <= 1 ? lo : lo + (hi - lo) * i / (count - 1);
+}
+
+Real gridStep(Real lo, Real hi, int count) {
+  return count <= 1 ? 0 : (hi - lo) / (count - 1);
+}
+
+}  // namespace
+
+CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSearchGrid& grid,
+                                    const BishopOptions& options) {
+  CriticalCircle best;
+  CircleSearchGrid pass = grid;
+  Real best_tangent = 0;
+  for (int p = 0; p <= grid.refinements; ++p) {
+    for (int ix = 0; ix < pass.centre_x_count; ++ix) {
+      for (int iy = 0; iy < pass.centre_y_count; ++iy) {
+        for (int it = 0; it < pass.tangent_count; ++it) {
+          const Real xc = gridValue(pass.centre_x_min, pass.centre_x_max, pass.centre_x_count, ix);
+          const Real yc = gridValue(pass.centre_y_min, pass.centre_y_max, pass.centre_y_count, iy);
+          const Real yt = gridValue(pass.tangent_y_min, pass.tangent_y_max, pass.tangent_count, it);
+          ++best.evaluated;
+          const SlipCircle circle{xc, yc, yc - yt};
+          SlipMass mass = sliceCircle(section, circle, grid.slice_count);
+          if (!mass.valid) {
+            ++best.rejected;
+            continue;
+          }
+          const FactorOfSafety fs = bishopSimplified(mass.slices, options);
+          if (!fs.admissible) {
+            ++best.rejected;
+            continue;
+          }
+          if (!best.found || fs.value < best.bishop.value) {
+            best.found = true;
+            best.circle = circle;
+            best.bishop = fs;
+            best.mass = std::move(mass);
+            best_tangent = yt;
+          }
+        }
+      }
+    }
+    if (!best.found) break;
+    // Next pass: one former spacing on either side of the best point.
+    const Real sx = gridStep(pass.centre_x_min, pass.centre_x_max, pass.centre_x_count);
+    const Real sy = gridStep(pass.centre_y_min, pass.centre_y_max, pass.centre_y_count);
+    const Real st = gridStep(pass.tangent_y_min, pass.tangent_y_max, pass.tangent_count);
+    pass.centre_x_min = best.circle.centre_x - sx;
+    pass.centre_x_max = best.circle.centre_x + sx;
+    pass.centre_y_min = best.circle.centre_y - sy;
+    pass.centre_y_max = best.circle.centre_y + sy;
+    pass.tangent_y_min = best_tangent - st;
+    pass.tangent_y_max = best_tangent + st;
+  }
+  if (best.found) best.ordinary = ordinaryMethodOfSlices(best.mass.slices);
+  return best;
+}
+
+}  // namespace argine

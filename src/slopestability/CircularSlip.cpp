@@ -1,0 +1,110 @@
+#include "argine/slopestability/CircularSlip.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace argine {
+
+Real Slice::baseLength() const {
+  return width / std::cos(base_angle);
+}
+
+namespace {
+
+/// Elevation of the lower arc at x (|x - centre_x| <= R).
+Real lowerArcY(const SlipCircle& c, Real x) {
+  const Real dx = x - c.centre_x;
+  return c.centre_y - std::sqrt(std::max(c.radius * c.radius - dx * dx, Real(0)));
+}
+
+}  // namespace
+
+std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const SlipCircle& c) {
+  std::vector<Real> crossings;
+  const Polyline& g = section.ground;
+  for (std::size_t i = 1; i < g.x.size(); ++i) {
+    // Segment P0 + t (P1 - P0), t in [0, 1], against |P - C| = R: a quadratic in t.
+    const Real px = g.x[i - 1] - c.centre_x, py = g.y[i - 1] - c.centre_y;
+    const Real dx = g.x[i] - g.x[i - 1], dy = g.y[i] - g.y[i - 1];
+    const Real a = dx * dx + dy * dy;
+    const Real b = 2 * (px * dx + py * dy);
+    const Real cc = px * px + py * py - c.radius * c.radius;
+    const Real disc = b * b - 4 * a * cc;
+    if (disc < 0) continue;
+    const Real root = std::sqrt(disc);
+    for (const Real t : {(-b - root) / (2 * a), (-b + root) / (2 * a)}) {
+      if (t < 0 || t > 1) continue;
+      if (py + t * dy > 0) continue;  // upper half of the circle
+      crossings.push_back(g.x[i - 1] + t * dx);
+    }
+  }
+  std::sort(crossings.begin(), crossings.end());
+  crossings.erase(std::unique(crossings.begin(), crossings.end(),
+                              [](Real p, Real q) { return std::abs(p - q) <= 1e-12; }),
+                  crossings.end());
+  return crossings;
+}
+
+SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count) {
+  SlipMass mass;
+  if (c.radius <= 0 || slice_count < 1) {
+    mass.reason = "radius or slice count not positive";
+    return mass;
+  }
+  const std::vector<Real> crossings = lowerArcGroundCrossings(section, c);
+  if (crossings.size() < 2) {
+    mass.reason = "the lower arc does not cut the ground twice";
+    return mass;
+  }
+  mass.entry_x = crossings.front();
+  mass.exit_x = crossings.back();
+  const Polyline& g = section.ground;
+  // The arc must come back to the ground inside the ground line: beyond the outermost
+  // crossings it must lie above the ground (or end), otherwise the mass runs out of the
+  // section.
+  for (const Real end : {g.xFirst(), g.xLast()}) {
+    if (std::abs(end - c.centre_x) < c.radius && (end < mass.entry_x || end > mass.exit_x) &&
+        lowerArcY(c, end) < g.at(end)) {
+      mass.reason = "the sliding mass runs out of the ground line";
+      return mass;
+    }
+  }
+  const Real lowest = (c.centre_x > mass.entry_x && c.centre_x < mass.exit_x)
+                          ? c.centre_y - c.radius
+                          : std::min(lowerArcY(c, mass.entry_x), lowerArcY(c, mass.exit_x));
+  if (lowest < section.floor) {
+    mass.reason = "the slip surface goes below the floor of the section";
+    return mass;
+  }
+
+  // Slice boundaries: equal widths, plus the ground vertices inside the mass.
+  std::vector<Real> bounds;
+  const Real span = mass.exit_x - mass.entry_x;
+  for (int i = 0; i <= slice_count; ++i) bounds.push_back(mass.entry_x + span * i / slice_count);
+  for (const Real xv : g.x) {
+    if (xv > mass.entry_x && xv < mass.exit_x) bounds.push_back(xv);
+  }
+  std::sort(bounds.begin(), bounds.end());
+  bounds.erase(std::unique(bounds.begin(), bounds.end(),
+                           [span](Real p, Real q) { return std::abs(p - q) <= 1e-9 * span; }),
+               bounds.end());
+
+  for (std::size_t i = 1; i < bounds.size(); ++i) {
+    Slice s;
+    s.width = bounds[i] - bounds[i - 1];
+    s.x_mid = 0.5 * (bounds[i] + bounds[i - 1]);
+    s.base_y = lowerArcY(c, s.x_mid);
+    s.top_y = g.at(s.x_mid);
+    s.base_angle = std::asin(std::clamp((s.x_mid - c.centre_x) / c.radius, Real(-1), Real(1)));
+    s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
+    s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
+    s.layer = section.layerAt(s.x_mid, s.base_y);
+    s.cohesion = section.layers[static_cast<std::size_t>(s.layer)].cohesion;
+    s.friction_angle = section.layers[static_cast<std::size_t>(s.layer)].friction_angle;
+    mass.slices.push_back(s);
+  }
+  mass.valid = true;
+  return mass;
+}
+
+}  // namespace argine
