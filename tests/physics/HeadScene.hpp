@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Harness.hpp"
+#include "LiquidPointStates.hpp"
 #include "argine/physics/LiquidHeadStabilisation.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -98,29 +99,8 @@ struct HeadScene {
   const PointMaterial& material() const { return table.host(0); }
   /// p_L at each point from `pressure(x, y)`; S_L, rho_L, k, M_L consistent with it.
   void setPressure(const std::function<Real(Real, Real)>& pressure) {
-    auto x = hostCopy(points.position);
-    auto volume = hostCopy(points.volume);
-    auto p = hostCopy(points.pressure_liquid);
-    auto rho = hostCopy(points.density_liquid);
-    auto s = hostCopy(points.saturation);
-    auto k = hostCopy(points.conductivity);
-    auto n = hostCopy(points.porosity);
-    auto m = hostCopy(points.mass_liquid);
-    for (int q = 0; q < points.count; ++q) {
-      p(q) = pressure(x(q, 0), x(q, 1));
-      const LiquidState state = saturationAndConductivity(material(), p(q));
-      rho(q) = liquidDensity(material().liquid, p(q));
-      s(q) = state.saturation;
-      k(q) = state.conductivity;
-      n(q) = kPorosity;
-      m(q) = kPorosity * s(q) * rho(q) * volume(q);
-    }
-    Kokkos::deep_copy(points.pressure_liquid, p);
-    Kokkos::deep_copy(points.density_liquid, rho);
-    Kokkos::deep_copy(points.saturation, s);
-    Kokkos::deep_copy(points.conductivity, k);
-    Kokkos::deep_copy(points.porosity, n);
-    Kokkos::deep_copy(points.mass_liquid, m);
+    setLiquidStates(points, material(), kPorosity,
+                    [&](int, Real x, Real y) { return pressure(x, y); });
   }
   /// The liquid mass each point gains in one step of `dt` (kg): -V dt div(c w) added by the
   /// stabilisation (the rates start at zero, no strain).

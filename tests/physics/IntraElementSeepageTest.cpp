@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../transfer/TestScenes.hpp"
+#include "LiquidPointStates.hpp"
 #include "argine/physics/IntraElementSeepage.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -57,29 +58,8 @@ struct TwoTriangles {
   }
   const PointMaterial& material() const { return table.host(0); }
   void setPressure(const std::function<Real(int, Real)>& pressure) {  // (point, y)
-    auto x = hostCopy(points.position);
-    auto volume = hostCopy(points.volume);
-    auto p = hostCopy(points.pressure_liquid);
-    auto rho = hostCopy(points.density_liquid);
-    auto s = hostCopy(points.saturation);
-    auto k = hostCopy(points.conductivity);
-    auto n = hostCopy(points.porosity);
-    auto m = hostCopy(points.mass_liquid);
-    for (int q = 0; q < points.count; ++q) {
-      p(q) = pressure(q, x(q, 1));
-      const LiquidState state = saturationAndConductivity(material(), p(q));
-      rho(q) = liquidDensity(material().liquid, p(q));
-      s(q) = state.saturation;
-      k(q) = state.conductivity;
-      n(q) = kPorosity;
-      m(q) = kPorosity * s(q) * rho(q) * volume(q);
-    }
-    Kokkos::deep_copy(points.pressure_liquid, p);
-    Kokkos::deep_copy(points.density_liquid, rho);
-    Kokkos::deep_copy(points.saturation, s);
-    Kokkos::deep_copy(points.conductivity, k);
-    Kokkos::deep_copy(points.porosity, n);
-    Kokkos::deep_copy(points.mass_liquid, m);
+    test::setLiquidStates(points, material(), kPorosity,
+                          [&](int q, Real, Real y) { return pressure(q, y); });
   }
   /// The liquid mass each point gains in one step of `dt` (kg): -V dt div(c w) added by the
   /// exchange (the rates start at zero, no strain).
