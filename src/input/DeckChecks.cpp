@@ -128,6 +128,7 @@ void checkDeck(const Deck& deck) {
   }
 
   input_detail::checkStageAdditions(deck);  // issue P4
+  input_detail::checkFactorOfSafety(deck);  // issue P13
 
   if (deck.output.name.find('/') != std::string::npos)
     throw InputError("Output/Name", "must be a file stem without '/', got '" + deck.output.name +

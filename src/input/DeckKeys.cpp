@@ -699,6 +699,11 @@ ListSchema stageKeys() {
   stage.add(KeySpec::sublist("Relaxation", relaxationKeys(),
                              "end the stage early once quasi-static (Duration (s) is then the "
                              "maximum)"));
+  stage.add(KeySpec::real("Hand Over Below Factor Of Safety", "-",
+                          "end the stage at the first output whose factor of safety (deck "
+                          "section Factor Of Safety) is below this, e.g. 1.0: the next stage "
+                          "(e.g. explicit MPM) starts from that state")
+                .above(0));
   stage.add(KeySpec::namedSublists("Material Changes", "material", materialChangeKeys(),
                                    "new parameters of materials (entry name = material name), "
                                    "applied when the stage starts"));
@@ -725,6 +730,73 @@ ListSchema checkpointKeys() {
 }
 
 // ---- end of issue P8 deck keys ----
+
+// ---- issue P13: factor of safety (simulation/FactorOfSafetyMonitor.hpp) ----
+
+ListSchema factorOfSafetyKeys() {
+  ListSchema fs;
+  fs.add(KeySpec::reals("Centre X (m)", "m", 2,
+                        "range of the trial circles' centre abscissae; default: the ground's "
+                        "extent"));
+  fs.add(KeySpec::reals("Centre Y (m)", "m", 2,
+                        "range of the centre elevations; default: from the top of the ground "
+                        "to twice the height of the section above it"));
+  fs.add(KeySpec::reals("Tangent Y (m)", "m", 2,
+                        "range of the elevations the circles are tangent to (radius = centre y "
+                        "- tangent y); default: from the bottom of the points to the top of the "
+                        "ground"));
+  fs.add(KeySpec::integer("Grid Count",
+                          "points per range of the search grid (centre x, centre "
+                          "y, tangent: count^3 circles a pass)")
+             .atLeast(2)
+             .atMost(101)
+             .byDefault(11LL));
+  fs.add(KeySpec::integer("Refinements",
+                          "passes after the first, each around the best circle with a spacing "
+                          "about (count - 1) / 2 times finer")
+             .atLeast(0)
+             .atMost(20)
+             .byDefault(3LL));
+  fs.add(KeySpec::integer("Slices", "slices of each trial mass")
+             .atLeast(5)
+             .atMost(2000)
+             .byDefault(50LL));
+  fs.add(KeySpec::real("Minimum Depth (m)", "m",
+                       "circles reaching less than this below the ground are not tried (a "
+                       "cohesionless slope's critical circle otherwise shrinks to its skin)")
+             .atLeast(0)
+             .byDefault(0.0));
+  fs.add(KeySpec::reals("Mass X Range (m)", "m", 2,
+                        "the sliding mass must lie between these abscissae (e.g. the landside "
+                        "of a levee); default: anywhere"));
+  fs.add(KeySpec::choice("Suction Strength", Words{"solid model", "vanapalli", "fredlund", "none"},
+                         "shear strength from matric suction s = -p_L on the slip surface: "
+                         "solid model = the materials' own (c(s), phi(s) of the suction-"
+                         "dependent Mohr-Coulomb, Eqs. 4.23-4.26, and Bishop's chi = S_L, Eq. "
+                         "4.5: the MPM's strength); vanapalli = s S_e tan(phi') (Eq. 5.1); "
+                         "fredlund = s tan(phi_b) (Eq. 5.2); none = suction ignored")
+             .byDefault(std::string("solid model")));
+  fs.add(KeySpec::real("Suction Friction Angle (deg)", "deg", "phi_b of the fredlund form")
+             .atLeast(0)
+             .below(90)
+             .when("Suction Strength", {"fredlund"})
+             .require());
+  fs.add(KeySpec::reals("Ground Surface (m)", "m", 0,
+                        "ground polyline x0, y0, x1, y1, ... (x increasing); default: the upper "
+                        "envelope of the material points at each evaluation"));
+  fs.add(KeySpec::real("Cell Size (m)", "m",
+                       "cell of the raster that averages the points' weights, p_L and S_L; 0: "
+                       "twice the median point spacing")
+             .atLeast(0)
+             .byDefault(0.0));
+  fs.add(KeySpec::boolean("Slice Table",
+                          "also write the critical circle's slices at each "
+                          "evaluation to <Name>_critical_slices.csv")
+             .byDefault(true));
+  return fs;
+}
+
+// ---- end of issue P13 deck keys ----
 
 ListSchema outputKeys() {
   ListSchema output;
@@ -885,6 +957,9 @@ ListSchema makeDeckSchema() {
   deck.add(KeySpec::sublist("Probes", probeKeys(), "CSV time series of points and sections"));
   deck.add(KeySpec::sublist("Guards", guardKeys(), "physical guards checked after each step"));
   deck.add(KeySpec::sublist("Parallel", parallelKeys(), "how a run over MPI ranks adds up"));
+  deck.add(KeySpec::sublist("Factor Of Safety", factorOfSafetyKeys(),
+                            "limit equilibrium (Bishop's simplified method, critical circle) on "
+                            "the points' state at every output; <Name>_factor_of_safety.csv"));
   checkSchema(deck);
   return deck;
 }

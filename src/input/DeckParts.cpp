@@ -425,7 +425,8 @@ StageSpec parseStage(const DeckSection& stage) {
     spec.boundaries.push_back(parseBoundary(boundary));
   if (spec.solver == SolverKind::ImplicitSeepage)
     spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
-  parseStageAdditions(stage, spec);  // issue P4
+  parseStageAdditions(stage, spec);          // issue P4
+  parseFactorOfSafetyHandOver(stage, spec);  // issue P13
   return spec;
 }
 

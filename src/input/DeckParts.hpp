@@ -29,6 +29,14 @@ void checkStageAdditions(const Deck& deck);
 /// (P8) `Guards` -> GuardsSpec (DeckGuards.cpp).
 GuardsSpec parseGuards(const DeckSection& guards);
 
+// ---- issue P13 (DeckFactorOfSafety.cpp) ----
+/// `Factor Of Safety` -> FactorOfSafetySpec (`present`: the section is in the deck).
+FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present);
+/// A stage's `Hand Over Below Factor Of Safety` into `stage`.
+void parseFactorOfSafetyHandOver(const DeckSection& stage_section, StageSpec& stage);
+/// The hand-over needs the `Factor Of Safety` section.
+void checkFactorOfSafety(const Deck& deck);
+
 /// Throws when two materials name the same block.
 void checkOneMaterialPerBlock(const Deck& deck);
 

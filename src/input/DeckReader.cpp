@@ -156,6 +156,8 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
   deck.guards = parseGuards(top.section("Guards"));                          // issue P8
   deck.parallel.reproducible_sums =
       top.section("Parallel").boolean("Reproducible Sums");  // issue P7
+  deck.factor_of_safety =
+      parseFactorOfSafety(top.section("Factor Of Safety"), top.has("Factor Of Safety"));  // P13
   checkDeck(deck);
   return deck;
 }

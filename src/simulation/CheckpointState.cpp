@@ -126,6 +126,7 @@ std::uintmax_t writeCheckpoint(const std::string& path, std::uint64_t deck_hash,
   out.put<std::uint64_t>(s.diagnostics_bytes);
   out.put<std::uint64_t>(s.boundary_flux_bytes);
   out.putVector(s.probe_bytes);
+  out.putVector(s.factor_of_safety_bytes);
   out.put<std::int64_t>(s.mesh_nodes);
   out.put<std::int64_t>(s.mesh_elements);
   putPoints(out, s.points);
@@ -176,6 +177,7 @@ void readCheckpoint(const std::string& path, std::uint64_t deck_hash, Checkpoint
   s.diagnostics_bytes = in.get<std::uint64_t>();
   s.boundary_flux_bytes = in.get<std::uint64_t>();
   s.probe_bytes = in.getVector<std::uint64_t>();
+  s.factor_of_safety_bytes = in.getVector<std::uint64_t>();
   s.mesh_nodes = in.get<std::int64_t>();
   s.mesh_elements = in.get<std::int64_t>();
   getPoints(in, s.points);

@@ -137,6 +137,7 @@ RunSummary Simulation::run() {
   else
     diagnostics_ = std::make_unique<CsvWriter>(diagnostics_path, diagnostics_columns);
   openBoundaryFluxLog();
+  openFactorOfSafetyLog();  // (P13)
   if (!deck_.probes.empty() && writes())
     probes_ = std::make_unique<ProbeWriter>(
         deck_.probes, options_.output_directory, deck_.output.name, initial_points,
@@ -227,6 +228,11 @@ void Simulation::runStage(const StageSpec& stage) {
       written = true;
       next_output_ = std::min(end, next_output_ + interval);
       if (next_output_ <= solver_->time() + tolerance) next_output_ = end;
+      if (handsOverOnFactorOfSafety(stage)) {  // (P13)
+        progress_->update(summary_.steps, solver_->time(), dt,
+                          distributed() ? static_cast<int>(total_points_) : points_.count);
+        break;
+      }
     } else if (!deck_.probes.empty() && deck_.probes.interval > 0 &&
                solver_->time() >= next_probe_time_ - tolerance) {
       writeProbes();
@@ -267,6 +273,7 @@ void Simulation::runStage(const StageSpec& stage) {
   // The stage's margin below the kinetic energy guard (RunGuards.hpp).
   const std::string peak = guards_->kineticEnergyPeak(stage.name);
   if (!peak.empty()) log(peak);
+  logLowestFactorOfSafety(stage);  // (P13)
   progress_->endStage(summary_.steps, solver_->time(), dt);
 }
 
@@ -318,8 +325,10 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
     summary_.point_updates += seepage.totals().steps * points_.count;
     writeOutput();
     progress_->update(summary_.steps, seepage.time(), seepage.nextStep(), points_.count);
+    if (handsOverOnFactorOfSafety(stage)) break;  // (P13)
   }
-  if (distributed()) {  // each rank keeps the points of its elements again
+  logLowestFactorOfSafety(stage);  // (P13)
+  if (distributed()) {             // each rank keeps the points of its elements again
     points_replicated_ = false;
     solver_->distribute(*ranks_);
   }
@@ -360,6 +369,7 @@ void Simulation::writeOutput() {
   total_points_ = totalPoints();
   if (results_) results_->write(solver_->time(), points, nodal);
   writeDiagnostics(points);
+  evaluateFactorOfSafety(points);  // (P13)
   writeBoundaryFluxes();
   writeProbes(points);
 }

@@ -234,6 +234,7 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
   s.boundary_flux_bytes = boundary_flux_ ? boundary_flux_->bytes() : 0;
   if (probes_)
     for (const auto bytes : probes_->fileBytes()) s.probe_bytes.push_back(bytes);
+  if (factor_of_safety_) s.factor_of_safety_bytes = factor_of_safety_->fileBytes();  // (P13)
   s.mesh_nodes = mesh_.numNodes();
   s.mesh_elements = mesh_.numElements();
   finishCheckpoint(

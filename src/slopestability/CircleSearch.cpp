@@ -10,6 +10,14 @@ Real gridValue(Real lo, Real hi, int count, int i) {
   return count <= 1 ? lo : lo + (hi - lo) * i / (count - 1);
 }
 
+/// Whether the search may take `mass`: inside the abscissa range, deep enough.
+bool withinSearchLimits(const SlipMass& mass, const CircleSearchGrid& grid) {
+  if (mass.entry_x < grid.mass_x_min || mass.exit_x > grid.mass_x_max) return false;
+  Real depth = 0;
+  for (const Slice& s : mass.slices) depth = std::max(depth, s.top_y - s.base_y);
+  return depth >= grid.min_depth;
+}
+
 Real gridStep(Real lo, Real hi, int count) {
   return count <= 1 ? 0 : (hi - lo) / (count - 1);
 }
@@ -31,7 +39,7 @@ CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSea
           ++best.evaluated;
           const SlipCircle circle{xc, yc, yc - yt};
           SlipMass mass = sliceCircle(section, circle, grid.slice_count);
-          if (!mass.valid) {
+          if (!mass.valid || !withinSearchLimits(mass, grid)) {
             ++best.rejected;
             continue;
           }

@@ -98,9 +98,11 @@ SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice
     s.base_angle = std::asin(std::clamp((s.x_mid - c.centre_x) / c.radius, Real(-1), Real(1)));
     s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
     s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
-    s.layer = section.layerAt(s.x_mid, s.base_y);
-    s.cohesion = section.layers[static_cast<std::size_t>(s.layer)].cohesion;
-    s.friction_angle = section.layers[static_cast<std::size_t>(s.layer)].friction_angle;
+    const BaseStrength strength = section.strengthAt(s.x_mid, s.base_y, s.pore_pressure);
+    s.layer = strength.layer;
+    s.cohesion = strength.cohesion;
+    s.friction_angle = strength.friction_angle;
+    s.suction_strength = strength.suction_strength;
     mass.slices.push_back(s);
   }
   mass.valid = true;

@@ -6,25 +6,6 @@
 
 namespace argine {
 
-Polyline::Polyline(std::vector<Real> xs, std::vector<Real> ys)
-    : x(std::move(xs)), y(std::move(ys)) {
-  if (x.size() != y.size() || x.empty()) {
-    throw std::invalid_argument("Polyline: as many x as y, at least one point");
-  }
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    if (!(x[i] > x[i - 1])) throw std::invalid_argument("Polyline: x must increase strictly");
-  }
-}
-
-Real Polyline::at(Real xq) const {
-  if (xq <= x.front()) return y.front();
-  if (xq >= x.back()) return y.back();
-  const auto upper = std::upper_bound(x.begin(), x.end(), xq);
-  const std::size_t i = static_cast<std::size_t>(upper - x.begin());
-  const Real t = (xq - x[i - 1]) / (x[i] - x[i - 1]);
-  return y[i - 1] + t * (y[i] - y[i - 1]);
-}
-
 int SlopeSection::layerAt(Real xq, Real yq) const {
   int found = 0;
   for (std::size_t i = 1; i < layers.size(); ++i) {
@@ -39,7 +20,18 @@ Real SlopeSection::porePressure(Real xq, Real yq) const {
   return water_unit_weight * std::max(phreatic.at(xq) - yq, Real(0));
 }
 
+BaseStrength SlopeSection::strengthAt(Real xq, Real yq, Real u) const {
+  if (strength_field) return strength_field(xq, yq, u);
+  BaseStrength strength;
+  strength.layer = layerAt(xq, yq);
+  const SoilLayer& layer = layers[static_cast<std::size_t>(strength.layer)];
+  strength.cohesion = layer.cohesion;
+  strength.friction_angle = layer.friction_angle;
+  return strength;
+}
+
 Real SlopeSection::columnWeight(Real xq, Real y_bottom, Real y_top, Real width) const {
+  if (column_weight_field) return width * column_weight_field(xq, y_bottom, y_top);
   Real weight_per_width = 0;
   for (std::size_t i = 0; i < layers.size(); ++i) {
     // Layer i spans from the top of layer i+1 up to its own top (the first layer up to the

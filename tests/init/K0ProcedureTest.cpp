@@ -6,9 +6,9 @@
 
 #include "TestMeshes.hpp"
 #include "argine/core/Error.hpp"
+#include "argine/core/Polyline.hpp"
 #include "argine/init/K0Formulas.hpp"
 #include "argine/init/K0Procedure.hpp"
-#include "argine/init/Polyline.hpp"
 #include "argine/init/VerticalColumns.hpp"
 #include "argine/input/Deck.hpp"
 #include "argine/physics/PointInitialisation.hpp"

@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "argine/core/Polyline.hpp"
 #include "argine/core/Types.hpp"
-#include "argine/init/Polyline.hpp"
 #include "argine/init/VerticalColumns.hpp"
 #include "argine/physics/MaterialTable.hpp"
 

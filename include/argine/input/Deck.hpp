@@ -263,6 +263,8 @@ struct StageSpec {
   ImplicitSeepageSpec seepage;                       ///< used by `implicit seepage` stages only
   RelaxationSpec relaxation;                         ///< optional early end (issue P4)
   std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
+  /// (P13) end the stage at the first output whose factor of safety is below this; 0: never
+  Real hand_over_below_factor_of_safety = 0;
 };
 
 // ---------------------------------------------------------------- initialisation (P4)
@@ -352,6 +354,29 @@ struct ParallelSpec {
   bool reproducible_sums = false;
 };
 
+// ---------------------------------------------------------------- factor of safety (P13)
+
+/// How matric suction s = -p_L adds shear strength on a slip surface
+/// (simulation/SlipSurfaceStrength.hpp).
+enum class SuctionStrength { SolidModel, Vanapalli, Fredlund, None };
+
+/// `Factor Of Safety`: Bishop's critical circle on the points' state at every output
+/// (simulation/FactorOfSafetyMonitor.hpp). Unset ranges follow from the ground.
+struct FactorOfSafetySpec {
+  bool enabled = false;
+  std::optional<std::array<Real, 2>> centre_x, centre_y, tangent_y;  ///< search ranges (m)
+  int grid_count = 11;
+  int refinements = 3;
+  int slices = 50;
+  Real min_depth = 0;                               ///< (m)
+  std::optional<std::array<Real, 2>> mass_x_range;  ///< (m)
+  SuctionStrength suction = SuctionStrength::SolidModel;
+  Real suction_friction_angle = 0;                  ///< phi_b (rad), fredlund
+  std::vector<std::array<Real, 2>> ground_surface;  ///< (m); empty: envelope of the points
+  Real cell_size = 0;                               ///< (m); 0: automatic
+  bool slice_table = true;
+};
+
 struct Deck {
   std::string path;  ///< the deck file (absolute)
   std::string title;
@@ -359,10 +384,11 @@ struct Deck {
   std::vector<MaterialSpec> materials;
   std::vector<StageSpec> stages;  ///< in the order written in the deck
   OutputSpec output;
-  InitialisationSpec initialisation;  ///< (P4)
-  ProbesSpec probes;                  ///< (P4)
-  GuardsSpec guards;                  ///< (P8)
-  ParallelSpec parallel;              ///< (P7)
+  InitialisationSpec initialisation;    ///< (P4)
+  ProbesSpec probes;                    ///< (P4)
+  GuardsSpec guards;                    ///< (P8)
+  ParallelSpec parallel;                ///< (P7)
+  FactorOfSafetySpec factor_of_safety;  ///< (P13)
 };
 
 }  // namespace argine

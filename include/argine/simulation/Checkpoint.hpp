@@ -40,6 +40,7 @@ struct CheckpointState {
   std::uint64_t diagnostics_bytes = 0;
   std::uint64_t boundary_flux_bytes = 0;  ///< 0: no boundary flux file
   std::vector<std::uint64_t> probe_bytes;
+  std::vector<std::uint64_t> factor_of_safety_bytes;  ///< (P13) its CSV files; empty: none
   // ---- consistency with the deck
   std::int64_t mesh_nodes = 0;
   std::int64_t mesh_elements = 0;

@@ -13,6 +13,7 @@
 #include "argine/mesh/Mesh.hpp"
 #include "argine/output/GridFile.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/simulation/FactorOfSafetyMonitor.hpp"
 
 namespace argine {
 
@@ -139,6 +140,19 @@ class Simulation {
   /// (P11) The points outside their physical p_L range now (warns when any), of all points.
   int countUnphysicalPressures(const MaterialPoints& points);
   std::vector<Real> lowest_pressures_;  ///< (P11) lowest physical p_L per material (Pa)
+  // ---- factor of safety (P13; SimulationFactorOfSafety.cpp)
+  void openFactorOfSafetyLog();
+  /// Bishop's factor of the critical circle of `points` (all points on rank 0), written to
+  /// its CSV; known on every rank afterwards. No-op without the deck's `Factor Of Safety`.
+  void evaluateFactorOfSafety(const MaterialPoints& points);
+  /// Whether `stage` hands over now (its threshold above the last factor); logs it.
+  bool handsOverOnFactorOfSafety(const StageSpec& stage);
+  /// Logs the stage's lowest factor of safety (if it evaluated any).
+  void logLowestFactorOfSafety(const StageSpec& stage);
+  std::unique_ptr<FactorOfSafetyMonitor> factor_of_safety_;  ///< rank 0, when enabled
+  Real last_factor_of_safety_ = 0;                           ///< NaN: none admissible
+  Real stage_lowest_factor_ = 0;                             ///< this stage's lowest (0: none yet)
+  Real stage_lowest_factor_time_ = 0;                        ///< (s) when
 
   // ---- checkpoint / restart (P8; SimulationCheckpoint.cpp, doc/checkpoints.md)
   void readRestartCheckpoint();  ///< options_.restart -> resume_ (InputError naming the file)

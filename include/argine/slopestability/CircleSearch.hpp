@@ -4,6 +4,7 @@
 /// tangent elevations (radius = centre_y - tangent_y, i.e. circles tangent to horizontal
 /// lines), Bishop's F of each, then the grid repeatedly refined around the lowest F.
 
+#include <limits>
 #include <vector>
 
 #include "argine/core/Types.hpp"
@@ -25,6 +26,13 @@ struct CircleSearchGrid {
   /// either side of the best point, so the spacing shrinks by about (count - 1) / 2 a pass.
   int refinements = 3;
   int slice_count = 50;
+  /// Circles whose deepest slice base lies less than this below the ground are not tried
+  /// (m): in a cohesionless slope the critical circle otherwise shrinks to the surface,
+  /// where F tends to the infinite-slope value tan(phi') / tan(beta) of a skin of no volume.
+  Real min_depth = 0;
+  /// The sliding mass must lie between these abscissae (m), e.g. one side of a levee.
+  Real mass_x_min = -std::numeric_limits<Real>::infinity();
+  Real mass_x_max = std::numeric_limits<Real>::infinity();
 };
 
 /// The result: the critical circle, its Bishop F and slices, and the search's bookkeeping.

@@ -32,6 +32,9 @@ struct Slice {
   int layer = 0;            ///< index of the layer at the base midpoint
   Real cohesion = 0;        ///< c' of the base material (Pa)
   Real friction_angle = 0;  ///< phi' of the base material (rad)
+  /// Shear strength matric suction adds on the base (Pa), an apparent cohesion; set by the
+  /// section's strength (BaseStrength), 0 for a saturated or dry base.
+  Real suction_strength = 0;
 
   /// Length of the base, b / cos(alpha) (m).
   Real baseLength() const;

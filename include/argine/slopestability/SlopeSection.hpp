@@ -10,26 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "argine/core/Polyline.hpp"
 #include "argine/core/Types.hpp"
 
 namespace argine {
-
-/// A piecewise linear function y(x) through points with increasing x. Outside its first and
-/// last x it is continued as a constant (the end values), which is what layer tops and a
-/// phreatic line drawn to the edge of a section mean.
-struct Polyline {
-  std::vector<Real> x;  ///< abscissae (m), strictly increasing
-  std::vector<Real> y;  ///< ordinates (m), one per abscissa
-
-  Polyline() = default;
-  Polyline(std::vector<Real> xs, std::vector<Real> ys);
-
-  /// y at x: linear between the points, constant beyond the ends.
-  Real at(Real xq) const;
-  bool empty() const { return x.empty(); }
-  Real xFirst() const { return x.front(); }
-  Real xLast() const { return x.back(); }
-};
 
 /// A soil layer: its top line and Mohr-Coulomb effective strength. The layer fills the space
 /// from its top down to the top of the next layer of the section (the last layer: down to
@@ -42,6 +26,16 @@ struct SoilLayer {
   Real friction_angle = 0;  ///< phi' (rad)
 };
 
+/// The strength on a slip surface at one place: the material (layer) there, its effective
+/// c' and phi', and the shear strength matric suction adds there, taken as an apparent
+/// cohesion on the base (Pa; e.g. chi s tan(phi), Vanapalli et al. 1996, thesis Eq. 5.1).
+struct BaseStrength {
+  int layer = 0;
+  Real cohesion = 0;          ///< c' (Pa)
+  Real friction_angle = 0;    ///< phi' (rad)
+  Real suction_strength = 0;  ///< (Pa), >= 0
+};
+
 /// The section: ground surface, layers from the top down, pore pressure.
 /// Layer tops may touch (a layer pinching out) but must not cross.
 struct SlopeSection {
@@ -52,6 +46,13 @@ struct SlopeSection {
   /// Pore pressure u(x, y) (Pa) given directly, e.g. interpolated from material points later;
   /// when set it replaces the phreatic line.
   std::function<Real(Real, Real)> pore_pressure_field;
+  /// Weight per unit area of the vertical column at x between y_bottom and y_top (N/m^2),
+  /// e.g. integrated from the material points' densities; when set it replaces the layers'
+  /// unit weights in columnWeight().
+  std::function<Real(Real, Real, Real)> column_weight_field;
+  /// Strength at (x, y) where the pore pressure is u (Pa); when set it replaces the layers'
+  /// c' and phi' in strengthAt() (e.g. the materials of the points with their suction).
+  std::function<BaseStrength(Real, Real, Real)> strength_field;
   /// Lowest elevation a slip surface may reach (m), e.g. a rigid base; -inf: no limit.
   Real floor = -std::numeric_limits<Real>::infinity();
 
@@ -62,6 +63,10 @@ struct SlopeSection {
   /// Pore pressure (Pa) at (x, y): pore_pressure_field if set, otherwise the hydrostatic
   /// value below the phreatic line, u = gamma_w max(h_w(x) - y, 0), otherwise 0.
   Real porePressure(Real x, Real y) const;
+
+  /// Strength at (x, y) with pore pressure u: strength_field if set, otherwise the c' and
+  /// phi' of layerAt(x, y) and no suction strength.
+  BaseStrength strengthAt(Real x, Real y, Real u) const;
 
   /// Weight per unit length of a vertical column of width `width` (m) at x between
   /// y_bottom and y_top (N/m): width times the sum over the layers of gamma times the

@@ -1,0 +1,81 @@
+// Issue P13: the deck's `Factor Of Safety` section and the stages' hand-over key, parsed and
+// cross-checked.
+#include <cmath>
+
+#include "DeckParts.hpp"
+#include "ValueText.hpp"
+#include "argine/core/Error.hpp"
+
+namespace argine::input_detail {
+
+namespace {
+
+constexpr Real kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+/// A two-number range [low, high] with low < high, or nothing when the key is absent.
+std::optional<std::array<Real, 2>> rangeOf(const DeckSection& section, const std::string& key) {
+  if (!section.has(key)) return std::nullopt;
+  const std::vector<double> values = section.reals(key);
+  if (!(values[0] < values[1]))
+    throw InputError(section.pathOf(key), "expected [low, high] with low < high, got [" +
+                                              formatReal(values[0]) + ", " + formatReal(values[1]) +
+                                              "]");
+  return std::array<Real, 2>{values[0], values[1]};
+}
+
+}  // namespace
+
+FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present) {
+  FactorOfSafetySpec spec;
+  spec.enabled = present;
+  if (!present) return spec;
+  spec.centre_x = rangeOf(section, "Centre X (m)");
+  spec.centre_y = rangeOf(section, "Centre Y (m)");
+  spec.tangent_y = rangeOf(section, "Tangent Y (m)");
+  spec.mass_x_range = rangeOf(section, "Mass X Range (m)");
+  spec.grid_count = static_cast<int>(section.integer("Grid Count"));
+  spec.refinements = static_cast<int>(section.integer("Refinements"));
+  spec.slices = static_cast<int>(section.integer("Slices"));
+  spec.min_depth = section.real("Minimum Depth (m)");
+  const std::string suction = section.word("Suction Strength");
+  spec.suction = suction == "vanapalli"  ? SuctionStrength::Vanapalli
+                 : suction == "fredlund" ? SuctionStrength::Fredlund
+                 : suction == "none"     ? SuctionStrength::None
+                                         : SuctionStrength::SolidModel;
+  if (spec.suction == SuctionStrength::Fredlund)
+    spec.suction_friction_angle = section.real("Suction Friction Angle (deg)") * kRadiansPerDegree;
+  if (section.has("Ground Surface (m)")) {
+    const std::string key = "Ground Surface (m)";
+    const std::vector<double> values = section.reals(key);
+    if (values.size() < 4 || values.size() % 2 != 0)
+      throw InputError(section.pathOf(key),
+                       "expected x, y pairs (an even count of at least 4 numbers), got " +
+                           std::to_string(values.size()) + " numbers");
+    for (std::size_t i = 0; i < values.size(); i += 2) {
+      if (!spec.ground_surface.empty() && !(values[i] > spec.ground_surface.back()[0]))
+        throw InputError(section.pathOf(key), "x must increase from vertex to vertex; vertex " +
+                                                  std::to_string(i / 2 + 1) +
+                                                  " has x = " + formatReal(values[i]));
+      spec.ground_surface.push_back({values[i], values[i + 1]});
+    }
+  }
+  spec.cell_size = section.real("Cell Size (m)");
+  spec.slice_table = section.boolean("Slice Table");
+  return spec;
+}
+
+void parseFactorOfSafetyHandOver(const DeckSection& stage_section, StageSpec& stage) {
+  const std::string key = "Hand Over Below Factor Of Safety";
+  if (stage_section.has(key)) stage.hand_over_below_factor_of_safety = stage_section.real(key);
+}
+
+void checkFactorOfSafety(const Deck& deck) {
+  if (deck.factor_of_safety.enabled) return;
+  for (const StageSpec& stage : deck.stages)
+    if (stage.hand_over_below_factor_of_safety > 0)
+      throw InputError("Stages/" + stage.name + "/Hand Over Below Factor Of Safety",
+                       "needs the deck section `Factor Of Safety` (how the factor of safety is "
+                       "computed), which is missing");
+}
+
+}  // namespace argine::input_detail

@@ -1,0 +1,131 @@
+// A limit-equilibrium section from material points (slopestability/PointSection.hpp): the
+// raster's weights, envelope and interpolation on lattices where the answer is known, and
+// ACADS 1(a) filled with points against the same search on the polygon section.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "argine/slopestability/CircleSearch.hpp"
+#include "argine/slopestability/PointSection.hpp"
+
+namespace argine {
+namespace {
+
+constexpr Real kDegree = M_PI / 180;
+
+/// Points on a lattice of spacing h (cell centres of an h-grid) below `ground`, above
+/// y_bottom, between x_left and x_right; unit weight gamma; p_L = p(x, y).
+template <class Pressure>
+SectionPoints latticeBelow(const Polyline& ground, Real x_left, Real x_right, Real y_bottom, Real h,
+                           Real gamma, Pressure p) {
+  SectionPoints pts;
+  for (Real x = x_left + h / 2; x < x_right; x += h)
+    for (Real y = y_bottom + h / 2; y < ground.at(x); y += h) {
+      pts.x.push_back(x);
+      pts.y.push_back(y);
+      pts.volume.push_back(h * h);
+      pts.weight.push_back(gamma * h * h);
+      pts.pore_pressure.push_back(p(x, y));
+      pts.saturation.push_back(1);
+      pts.material.push_back(0);
+    }
+  return pts;
+}
+
+TEST(PointRaster, BlockWeightsEnvelopeAndLinearPressure) {
+  // A 2 m x 1 m block, h = 0.1 m, gamma = 20 kN/m3, hydrostatic p_L = 9810 (1 - y).
+  const Polyline top({0.0, 2.0}, {1.0, 1.0});
+  const SectionPoints pts =
+      latticeBelow(top, 0, 2, 0, 0.1, 20e3, [](Real, Real y) { return 9810 * (1 - y); });
+  ASSERT_EQ(pts.size(), 200u);
+  const PointRaster raster(pts, 0);
+  EXPECT_NEAR(raster.cellSize(), 0.2, 1e-12);  // twice the spacing sqrt(V) = 0.1
+  // The envelope: highest point 0.95 plus half its spacing: y = 1 from x = 0 to 2.
+  const Polyline& g = raster.ground();
+  EXPECT_NEAR(g.xFirst(), 0, 1e-12);
+  EXPECT_NEAR(g.xLast(), 2, 1e-12);
+  for (const Real y : g.y) EXPECT_NEAR(y, 1.0, 1e-12);
+  EXPECT_NEAR(raster.bottom(), 0, 1e-12);
+  // Weight per area of any column part: gamma times its height.
+  EXPECT_NEAR(raster.columnWeightDensity(1.03, 0.0, 1.0), 20e3, 1e-8);
+  EXPECT_NEAR(raster.columnWeightDensity(0.31, 0.27, 0.64), 20e3 * 0.37, 1e-8);
+  // A linear field is reproduced wherever the four surrounding cells hold points.
+  for (const auto& [x, y] : {std::pair<Real, Real>{0.5, 0.5}, {1.37, 0.21}, {0.77, 0.83}})
+    EXPECT_NEAR(raster.porePressure(x, y), 9810 * (1 - y), 1e-8) << x << ", " << y;
+  EXPECT_NEAR(raster.saturation(1, 0.5), 1, 1e-15);
+  EXPECT_EQ(raster.material(1, 0.5), 0);
+}
+
+TEST(PointSection, AcadsProblem1aFromPointsAsFromItsPolygon) {
+  // ACADS 1(a) (AcadsBenchmarkTest.cpp): c' = 3 kPa, phi' = 19.6 deg, gamma = 20 kN/m3, dry.
+  const Polyline ground({20, 30, 50, 70}, {25, 25, 35, 35});
+  SlopeSection polygon;
+  polygon.ground = ground;
+  polygon.layers.push_back({"soil", ground, 20e3, 3e3, 19.6 * kDegree});
+  polygon.floor = 20;
+  CircleSearchGrid grid;
+  grid.centre_x_min = 25;
+  grid.centre_x_max = 55;
+  grid.centre_y_min = 36;
+  grid.centre_y_max = 66;
+  grid.tangent_y_min = 20;
+  grid.tangent_y_max = 34;
+  const CriticalCircle exact = searchCriticalCircle(polygon, grid);
+  ASSERT_TRUE(exact.found);
+
+  const Real h = 0.1;  // spacing: 1 % of the slope height
+  const SectionPoints pts = latticeBelow(ground, 20, 70, 20, h, 20e3, [](Real, Real) { return 0; });
+  const SlopeSection section = sectionFromPoints(pts, [](int, Real, Real) {
+    return BaseStrength{0, 3e3, 19.6 * kDegree, 0};
+  });
+  const CriticalCircle points = searchCriticalCircle(section, grid);
+  ASSERT_TRUE(points.found);
+  std::cout << "ACADS 1(a) Bishop F: polygon " << exact.bishop.value << ", from " << pts.size()
+            << " points " << points.bishop.value << "\n";
+  // The points' envelope lies within a spacing of the face and the masses differ by O(h/H):
+  // the factor agrees to 1 % (h / H = 0.01).
+  EXPECT_NEAR(points.bishop.value, exact.bishop.value, 0.01 * exact.bishop.value);
+  EXPECT_NEAR(points.mass.entry_x, exact.mass.entry_x, 1.0);
+  EXPECT_NEAR(points.mass.exit_x, exact.mass.exit_x, 1.0);
+}
+
+TEST(PointSection, PorePressureAndSuctionFromThePoints) {
+  // The same slope with a phreatic line at y = 24.9 up to the toe (x = 30), rising to y = 31
+  // at x = 70, below the ground everywhere (p_L = 9810 (h_w(x) - y), negative above it): the
+  // positive pore pressure lowers F, a suction strength added by the strength callable raises it
+  // again.
+  const Polyline ground({20, 30, 50, 70}, {25, 25, 35, 35});
+  const Polyline phreatic({20, 30, 70}, {24.9, 24.9, 31});
+  const auto water = [&phreatic](Real x, Real y) { return 9810 * (phreatic.at(x) - y); };
+  const SectionPoints pts = latticeBelow(ground, 20, 70, 20, 0.1, 20e3, water);
+  CircleSearchGrid grid;
+  grid.centre_x_min = 25;
+  grid.centre_x_max = 55;
+  grid.centre_y_min = 36;
+  grid.centre_y_max = 66;
+  grid.tangent_y_min = 20;
+  grid.tangent_y_max = 34;
+  const auto plain = [](int, Real, Real) { return BaseStrength{0, 3e3, 19.6 * kDegree, 0}; };
+  const auto suction = [](int, Real p_L, Real S_L) {
+    return BaseStrength{0, 3e3, 19.6 * kDegree,
+                        S_L * std::max(-p_L, Real(0)) * std::tan(19.6 * kDegree)};
+  };
+  // The polygon section with the phreatic line gives the reference of the wet case.
+  SlopeSection polygon;
+  polygon.ground = ground;
+  polygon.layers.push_back({"soil", ground, 20e3, 3e3, 19.6 * kDegree});
+  polygon.floor = 20;
+  polygon.phreatic = phreatic;
+  const Real wet_exact = searchCriticalCircle(polygon, grid).bishop.value;
+  const Real wet = searchCriticalCircle(sectionFromPoints(pts, plain), grid).bishop.value;
+  const Real dry_suction = searchCriticalCircle(sectionFromPoints(pts, suction), grid).bishop.value;
+  std::cout << "ACADS 1(a) with a phreatic line: polygon " << wet_exact << ", points " << wet
+            << ", points with suction strength " << dry_suction << "\n";
+  EXPECT_NEAR(wet, wet_exact, 0.01 * wet_exact);
+  EXPECT_LT(wet, 0.985);        // below the dry factor
+  EXPECT_GT(dry_suction, wet);  // suction above the table adds strength
+}
+
+}  // namespace
+}  // namespace argine
