@@ -1,0 +1,56 @@
+#include "argine/slopestability/Slicing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace argine {
+
+Real Slice::baseLength() const {
+  return width / std::cos(base_angle);
+}
+
+std::vector<Real> sliceBoundaries(Real entry_x, Real exit_x, int slice_count,
+                                  const std::vector<Real>& extra) {
+  std::vector<Real> bounds;
+  const Real span = exit_x - entry_x;
+  for (int i = 0; i <= slice_count; ++i) bounds.push_back(entry_x + span * i / slice_count);
+  for (const Real xv : extra) {
+    if (xv > entry_x && xv < exit_x) bounds.push_back(xv);
+  }
+  std::sort(bounds.begin(), bounds.end());
+  bounds.erase(std::unique(bounds.begin(), bounds.end(),
+                           [span](Real p, Real q) { return std::abs(p - q) <= 1e-9 * span; }),
+               bounds.end());
+  return bounds;
+}
+
+std::vector<Real> sectionVertices(const SlopeSection& section) {
+  std::vector<Real> xs = section.ground.x;
+  for (std::size_t i = 1; i < section.layers.size(); ++i) {
+    const std::vector<Real>& top = section.layers[i].top.x;
+    xs.insert(xs.end(), top.begin(), top.end());
+  }
+  return xs;
+}
+
+std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<Real>& bounds,
+                                const SlipBase& base) {
+  std::vector<Slice> slices;
+  for (std::size_t i = 1; i < bounds.size(); ++i) {
+    Slice s;
+    s.width = bounds[i] - bounds[i - 1];
+    s.x_mid = 0.5 * (bounds[i] + bounds[i - 1]);
+    s.base_y = base.elevation(s.x_mid);
+    s.top_y = section.ground.at(s.x_mid);
+    s.base_angle = base.inclination(s.x_mid);
+    s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
+    s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
+    s.layer = section.layerAt(s.x_mid, s.base_y);
+    s.cohesion = section.layers[static_cast<std::size_t>(s.layer)].cohesion;
+    s.friction_angle = section.layers[static_cast<std::size_t>(s.layer)].friction_angle;
+    slices.push_back(s);
+  }
+  return slices;
+}
+
+}  // namespace argine
