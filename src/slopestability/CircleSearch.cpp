@@ -18,6 +18,16 @@ Real gridStep(Real lo, Real hi, int count) {
 
 CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSearchGrid& grid,
                                     const BishopOptions& options) {
+  CriticalCircle best =
+      searchCriticalCircleBy(section, grid, [&options](const SlipMass& mass, const SlipCircle&) {
+        return bishopSimplified(mass.slices, options);
+      });
+  if (best.found) best.bishop = best.objective;
+  return best;
+}
+
+CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleSearchGrid& grid,
+                                      const CircleObjective& objective) {
   CriticalCircle best;
   CircleSearchGrid pass = grid;
   Real best_tangent = 0;
@@ -35,15 +45,15 @@ CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSea
             ++best.rejected;
             continue;
           }
-          const FactorOfSafety fs = bishopSimplified(mass.slices, options);
+          const FactorOfSafety fs = objective(mass, circle);
           if (!fs.admissible) {
             ++best.rejected;
             continue;
           }
-          if (!best.found || fs.value < best.bishop.value) {
+          if (!best.found || fs.value < best.objective.value) {
             best.found = true;
             best.circle = circle;
-            best.bishop = fs;
+            best.objective = fs;
             best.mass = std::move(mass);
             best_tangent = yt;
           }
@@ -62,7 +72,10 @@ CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSea
     pass.tangent_y_min = best_tangent - st;
     pass.tangent_y_max = best_tangent + st;
   }
-  if (best.found) best.ordinary = ordinaryMethodOfSlices(best.mass.slices);
+  if (best.found) {
+    best.bishop = bishopSimplified(best.mass.slices);
+    best.ordinary = ordinaryMethodOfSlices(best.mass.slices);
+  }
   return best;
 }
 

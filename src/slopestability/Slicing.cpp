@@ -30,6 +30,10 @@ std::vector<Real> sectionVertices(const SlopeSection& section) {
     const std::vector<Real>& top = section.layers[i].top.x;
     xs.insert(xs.end(), top.begin(), top.end());
   }
+  for (const SurfaceLoad& load : section.loads) {
+    xs.push_back(load.x_start);
+    xs.push_back(load.x_end);
+  }
   return xs;
 }
 
@@ -44,6 +48,7 @@ std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<R
     s.top_y = section.ground.at(s.x_mid);
     s.base_angle = base.inclination(s.x_mid);
     s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
+    s.weight += section.surfaceLoad(bounds[i - 1], bounds[i]);
     s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
     s.layer = section.layerAt(s.x_mid, s.base_y);
     s.cohesion = section.layers[static_cast<std::size_t>(s.layer)].cohesion;

@@ -28,13 +28,14 @@ struct SlipBase {
 std::vector<Real> sliceBoundaries(Real entry_x, Real exit_x, int slice_count,
                                   const std::vector<Real>& extra);
 
-/// Abscissae of the ground's and the layer tops' vertices: boundaries that keep the ground
-/// and every layer top straight over each slice, so the midpoint weight is exact.
+/// Abscissae of the ground's and the layer tops' vertices and of the ends of the surface
+/// loads: boundaries that keep the ground, every layer top and every load linear over each
+/// slice, so the midpoint weight is exact and a load acts (nearly) on the slice's midline.
 std::vector<Real> sectionVertices(const SlopeSection& section);
 
 /// One slice per pair of consecutive boundaries: base midpoint from `base`, weight as the
-/// column weight at the midpoint times the width (midpoint rule), u and material at the base
-/// midpoint. suction_strength is left 0.
+/// column weight at the midpoint times the width (midpoint rule) plus the surface load on the
+/// slice's top, u and material at the base midpoint. suction_strength is left 0.
 std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<Real>& bounds,
                                 const SlipBase& base);
 
