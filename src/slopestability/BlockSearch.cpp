@@ -29,7 +29,9 @@ bool surfaceOf(const SlopeSection& section, const BlockSearchWindows& w, const P
   surface.x = {p[0], p[1], p[2], p[3]};
   surface.y = {section.ground.at(p[0]), w.plane.at(p[1]) + p[4], w.plane.at(p[2]) + p[4],
                section.ground.at(p[3])};
-  return true;
+  const Real left = std::atan(std::abs(surface.y[1] - surface.y[0]) / (p[1] - p[0]));
+  const Real right = std::atan(std::abs(surface.y[3] - surface.y[2]) / (p[3] - p[2]));
+  return left <= w.max_left_end_inclination && right <= w.max_right_end_inclination;
 }
 
 }  // namespace
@@ -45,7 +47,8 @@ CriticalBlock searchCriticalBlock(const SlopeSection& section, const BlockSearch
       ++best.rejected;
       return false;
     }
-    SlipMass mass = slicePolyline(section, surface, windows.slice_count);
+    SlipMass mass =
+        slicePolyline(section, surface, windows.slice_count, windows.split_at_materials);
     if (!mass.valid) {
       ++best.rejected;
       return false;

@@ -40,7 +40,7 @@ CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleS
           const Real yt = gridValue(pass.tangent_y_min, pass.tangent_y_max, pass.tangent_count, it);
           ++best.evaluated;
           const SlipCircle circle{xc, yc, yc - yt};
-          SlipMass mass = sliceCircle(section, circle, grid.slice_count);
+          SlipMass mass = sliceCircle(section, circle, grid.slice_count, grid.split_at_materials);
           if (!mass.valid) {
             ++best.rejected;
             continue;

@@ -43,7 +43,8 @@ std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const Sli
   return crossings;
 }
 
-SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count) {
+SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count,
+                     bool split_at_materials) {
   SlipMass mass;
   if (c.radius <= 0 || slice_count < 1) {
     mass.reason = "radius or slice count not positive";
@@ -76,13 +77,18 @@ SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice
   }
 
   // Slice boundaries: equal widths, plus the ground and layer-top vertices inside the mass.
-  const std::vector<Real> bounds =
-      sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, sectionVertices(section));
+  std::vector<Real> extra = sectionVertices(section);
+  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
   const SlipBase base{
       [&c](Real x) { return lowerArcY(c, x); },
       [&c](Real x) {
         return std::asin(std::clamp((x - c.centre_x) / c.radius, Real(-1), Real(1)));
       }};
+  if (split_at_materials) {
+    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
+    extra.insert(extra.end(), crossings.begin(), crossings.end());
+    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  }
   mass.slices = sliceColumns(section, bounds, base);
   mass.valid = true;
   return mass;

@@ -19,7 +19,8 @@ Real segmentAngle(const Polyline& p, Real xq) {
 
 }  // namespace
 
-SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int slice_count) {
+SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int slice_count,
+                       bool split_at_materials) {
   SlipMass mass;
   if (surface.x.size() < 2 || slice_count < 1) {
     mass.reason = "fewer than two points or no slices";
@@ -72,9 +73,14 @@ SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int
 
   std::vector<Real> extra = sectionVertices(section);
   extra.insert(extra.end(), surface.x.begin(), surface.x.end());
-  const std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
   const SlipBase base{[&surface](Real x) { return surface.at(x); },
                       [&surface](Real x) { return segmentAngle(surface, x); }};
+  if (split_at_materials) {
+    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
+    extra.insert(extra.end(), crossings.begin(), crossings.end());
+    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  }
   mass.slices = sliceColumns(section, bounds, base);
   mass.valid = true;
   return mass;

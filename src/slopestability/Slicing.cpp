@@ -37,6 +37,33 @@ std::vector<Real> sectionVertices(const SlopeSection& section) {
   return xs;
 }
 
+std::vector<Real> materialBoundaryCrossings(const SlopeSection& section,
+                                            const std::vector<Real>& bounds, const SlipBase& base) {
+  std::vector<Real> crossings;
+  for (std::size_t k = 1; k < section.layers.size(); ++k) {
+    const Polyline& top = section.layers[k].top;
+    const auto gap = [&](Real x) { return top.at(x) - base.elevation(x); };
+    for (std::size_t i = 1; i < bounds.size(); ++i) {
+      Real a = bounds[i - 1], b = bounds[i];
+      Real ga = gap(a);
+      const Real gb = gap(b);
+      if (ga == 0 || gb == 0 || (ga < 0) == (gb < 0)) continue;
+      for (int it = 0; it < 60; ++it) {
+        const Real m = 0.5 * (a + b);
+        const Real gm = gap(m);
+        if ((gm < 0) == (ga < 0)) {
+          a = m;
+          ga = gm;
+        } else {
+          b = m;
+        }
+      }
+      crossings.push_back(0.5 * (a + b));
+    }
+  }
+  return crossings;
+}
+
 std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<Real>& bounds,
                                 const SlipBase& base) {
   std::vector<Slice> slices;

@@ -9,6 +9,8 @@
 /// parameter moved by +/- its step while F falls, all steps halved when none does, until the
 /// steps are below a tolerance. The objective is Spencer's F (Spencer.hpp).
 
+#include <cmath>
+
 #include "argine/core/Types.hpp"
 #include "argine/slopestability/Slice.hpp"
 #include "argine/slopestability/SlopeSection.hpp"
@@ -22,12 +24,19 @@ struct BlockSearchWindows {
   Real left_vertex_min = 0, left_vertex_max = 0;  ///< x of the left vertex
   Real right_vertex_min = 0, right_vertex_max = 0;
   Real right_end_min = 0, right_end_max = 0;
-  Polyline plane;                       ///< the sliding plane y_p(x)
-  Real offset_min = 0, offset_max = 0;  ///< vertex elevation above y_p (m)
-  int grid_count = 5;                   ///< grid points per window (>= 1)
-  Real step_tolerance = 1e-3;           ///< stop the pattern search below this step (m)
+  Polyline plane;  ///< the sliding plane y_p(x)
+  Real offset_min = 0, offset_max = 0;
+  /// Steepest admissible end segments (rad from the horizontal); steeper ones are skipped.
+  /// A toe segment no steeper than the passive wedge, 45 deg - phi'/2 (Rankine), keeps the
+  /// search off nearly vertical toe cuts on which Spencer's equations can have spurious roots
+  /// (doc/theory.md, Sec. 9).
+  Real max_left_end_inclination = M_PI / 2;
+  Real max_right_end_inclination = M_PI / 2;  ///< vertex elevation above y_p (m)
+  int grid_count = 5;                         ///< grid points per window (>= 1)
+  Real step_tolerance = 1e-3;                 ///< stop the pattern search below this step (m)
   int max_evaluations = 20000;
   int slice_count = 50;
+  bool split_at_materials = true;  ///< slicePolyline's option: no base across two materials
 };
 
 /// The result: the critical polyline, its Spencer F and slices, and the bookkeeping.

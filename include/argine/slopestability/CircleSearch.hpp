@@ -27,6 +27,7 @@ struct CircleSearchGrid {
   /// either side of the best point, so the spacing shrinks by about (count - 1) / 2 a pass.
   int refinements = 3;
   int slice_count = 50;
+  bool split_at_materials = false;  ///< sliceCircle's option: no base across two materials
 };
 
 /// The result: the critical circle, its Bishop F and slices, and the search's bookkeeping.

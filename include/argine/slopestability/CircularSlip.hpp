@@ -25,9 +25,12 @@ std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const Sli
 /// Cuts the mass above `circle` into about `slice_count` slices of equal width between the
 /// outermost crossings; the vertices of the ground line and of the layer tops inside the mass
 /// are added as slice boundaries so that they are straight over every slice (sliceColumns,
-/// Slicing.hpp). Weights are column weights at the slice midpoints (midpoint rule). Rejected (valid
-/// = false): fewer than two crossings of the lower arc with the ground, a mass running out of the
-/// ground line, a base below section.floor.
-SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& circle, int slice_count);
+/// Slicing.hpp). Weights are column weights at the slice midpoints (midpoint rule).
+/// Rejected (valid = false): fewer than two crossings of the lower arc with the ground, a mass
+/// running out of the ground line, a base below section.floor.
+/// split_at_materials: also cut where the arc crosses a layer top (materialBoundaryCrossings,
+/// Slicing.hpp), so that no slice base straddles two materials.
+SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& circle, int slice_count,
+                     bool split_at_materials = false);
 
 }  // namespace argine

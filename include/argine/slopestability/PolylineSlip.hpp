@@ -20,7 +20,9 @@ namespace argine {
 /// the entry and exit are where it crosses the ground, found exactly on the piecewise linear
 /// difference ground - surface. Rejected (valid = false): a polyline starting or ending below
 /// the ground, never below it, crossing outside the ground line, or a base below
-/// section.floor.
-SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int slice_count);
+/// section.floor. split_at_materials: also cut where the surface crosses a layer top
+/// (materialBoundaryCrossings, Slicing.hpp), so that no slice base straddles two materials.
+SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int slice_count,
+                       bool split_at_materials = false);
 
 }  // namespace argine

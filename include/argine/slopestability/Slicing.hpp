@@ -33,6 +33,14 @@ std::vector<Real> sliceBoundaries(Real entry_x, Real exit_x, int slice_count,
 /// slice, so the midpoint weight is exact and a load acts (nearly) on the slice's midline.
 std::vector<Real> sectionVertices(const SlopeSection& section);
 
+/// Where the base crosses a layer top between consecutive boundaries (a sign change of
+/// top - base at the two ends, located by bisection): extra boundaries that keep every slice
+/// base in one material. Without them a slice straddling a material boundary takes the
+/// material of its midpoint for the whole base, and a search can pick out surfaces where that
+/// error is favourable.
+std::vector<Real> materialBoundaryCrossings(const SlopeSection& section,
+                                            const std::vector<Real>& bounds, const SlipBase& base);
+
 /// One slice per pair of consecutive boundaries: base midpoint from `base`, weight as the
 /// column weight at the midpoint times the width (midpoint rule) plus the surface load on the
 /// slice's top, u and material at the base midpoint. suction_strength is left 0.
