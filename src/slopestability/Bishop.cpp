@@ -41,7 +41,7 @@ FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices) {
     const Real u = std::max(s.pore_pressure, Real(0));
     // Effective normal force W cos(alpha) - u l, not allowed to become tensile.
     const Real normal = std::max(s.weight * std::cos(alpha) - u * l, Real(0));
-    resisting += (s.cohesion + s.suction_strength) * l + normal * std::tan(s.friction_angle);
+    resisting += s.apparentCohesion() * l + normal * std::tan(s.friction_angle);
   }
   result.value = resisting / result.driving;
   result.admissible = true;
@@ -73,9 +73,7 @@ FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOp
       const Real m = bishopMAlpha(sign * s.base_angle, s.friction_angle, factor);
       const Real u = std::max(s.pore_pressure, Real(0));
       const Real effective = std::max(s.weight - u * s.width, Real(0));
-      resisting +=
-          ((s.cohesion + s.suction_strength) * s.width + effective * std::tan(s.friction_angle)) /
-          m;
+      resisting += (s.apparentCohesion() * s.width + effective * std::tan(s.friction_angle)) / m;
     }
     result.iterations = k;
     Real next = resisting / result.driving;

@@ -26,6 +26,16 @@ Real gridStep(Real lo, Real hi, int count) {
 
 CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSearchGrid& grid,
                                     const BishopOptions& options) {
+  CriticalCircle best =
+      searchCriticalCircleBy(section, grid, [&options](const SlipMass& mass, const SlipCircle&) {
+        return bishopSimplified(mass.slices, options);
+      });
+  if (best.found) best.bishop = best.objective;
+  return best;
+}
+
+CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleSearchGrid& grid,
+                                      const CircleObjective& objective) {
   CriticalCircle best;
   CircleSearchGrid pass = grid;
   Real best_tangent = 0;
@@ -38,20 +48,20 @@ CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSea
           const Real yt = gridValue(pass.tangent_y_min, pass.tangent_y_max, pass.tangent_count, it);
           ++best.evaluated;
           const SlipCircle circle{xc, yc, yc - yt};
-          SlipMass mass = sliceCircle(section, circle, grid.slice_count);
+          SlipMass mass = sliceCircle(section, circle, grid.slice_count, grid.split_at_materials);
           if (!mass.valid || !withinSearchLimits(mass, grid)) {
             ++best.rejected;
             continue;
           }
-          const FactorOfSafety fs = bishopSimplified(mass.slices, options);
+          const FactorOfSafety fs = objective(mass, circle);
           if (!fs.admissible) {
             ++best.rejected;
             continue;
           }
-          if (!best.found || fs.value < best.bishop.value) {
+          if (!best.found || fs.value < best.objective.value) {
             best.found = true;
             best.circle = circle;
-            best.bishop = fs;
+            best.objective = fs;
             best.mass = std::move(mass);
             best_tangent = yt;
           }
@@ -70,7 +80,10 @@ CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSea
     pass.tangent_y_min = best_tangent - st;
     pass.tangent_y_max = best_tangent + st;
   }
-  if (best.found) best.ordinary = ordinaryMethodOfSlices(best.mass.slices);
+  if (best.found) {
+    best.bishop = bishopSimplified(best.mass.slices);
+    best.ordinary = ordinaryMethodOfSlices(best.mass.slices);
+  }
   return best;
 }
 

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace argine {
+#include "argine/slopestability/Slicing.hpp"
 
-Real Slice::baseLength() const {
-  return width / std::cos(base_angle);
-}
+namespace argine {
 
 namespace {
 
@@ -45,7 +43,8 @@ std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const Sli
   return crossings;
 }
 
-SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count) {
+SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count,
+                     bool split_at_materials) {
   SlipMass mass;
   if (c.radius <= 0 || slice_count < 1) {
     mass.reason = "radius or slice count not positive";
@@ -77,34 +76,20 @@ SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice
     return mass;
   }
 
-  // Slice boundaries: equal widths, plus the ground vertices inside the mass.
-  std::vector<Real> bounds;
-  const Real span = mass.exit_x - mass.entry_x;
-  for (int i = 0; i <= slice_count; ++i) bounds.push_back(mass.entry_x + span * i / slice_count);
-  for (const Real xv : g.x) {
-    if (xv > mass.entry_x && xv < mass.exit_x) bounds.push_back(xv);
+  // Slice boundaries: equal widths, plus the ground and layer-top vertices inside the mass.
+  std::vector<Real> extra = sectionVertices(section);
+  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  const SlipBase base{
+      [&c](Real x) { return lowerArcY(c, x); },
+      [&c](Real x) {
+        return std::asin(std::clamp((x - c.centre_x) / c.radius, Real(-1), Real(1)));
+      }};
+  if (split_at_materials) {
+    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
+    extra.insert(extra.end(), crossings.begin(), crossings.end());
+    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
   }
-  std::sort(bounds.begin(), bounds.end());
-  bounds.erase(std::unique(bounds.begin(), bounds.end(),
-                           [span](Real p, Real q) { return std::abs(p - q) <= 1e-9 * span; }),
-               bounds.end());
-
-  for (std::size_t i = 1; i < bounds.size(); ++i) {
-    Slice s;
-    s.width = bounds[i] - bounds[i - 1];
-    s.x_mid = 0.5 * (bounds[i] + bounds[i - 1]);
-    s.base_y = lowerArcY(c, s.x_mid);
-    s.top_y = g.at(s.x_mid);
-    s.base_angle = std::asin(std::clamp((s.x_mid - c.centre_x) / c.radius, Real(-1), Real(1)));
-    s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
-    s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
-    const BaseStrength strength = section.strengthAt(s.x_mid, s.base_y, s.pore_pressure);
-    s.layer = strength.layer;
-    s.cohesion = strength.cohesion;
-    s.friction_angle = strength.friction_angle;
-    s.suction_strength = strength.suction_strength;
-    mass.slices.push_back(s);
-  }
+  mass.slices = sliceColumns(section, bounds, base);
   mass.valid = true;
   return mass;
 }

@@ -44,4 +44,16 @@ Real SlopeSection::columnWeight(Real xq, Real y_bottom, Real y_top, Real width) 
   return width * weight_per_width;
 }
 
+Real SlopeSection::surfaceLoad(Real x0, Real x1) const {
+  Real total = 0;
+  for (const SurfaceLoad& load : loads) {
+    const Real a = std::max(x0, load.x_start), b = std::min(x1, load.x_end);
+    if (!(b > a) || !(load.x_end > load.x_start)) continue;
+    // q linear on the overlap: its mean is q at the overlap's midpoint.
+    const Real t = (0.5 * (a + b) - load.x_start) / (load.x_end - load.x_start);
+    total += (b - a) * (load.q_start + t * (load.q_end - load.q_start));
+  }
+  return total;
+}
+
 }  // namespace argine

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Bishop.hpp
-/// Factors of safety of a sliced circular surface by moment equilibrium about the centre:
+/// Factors of safety of a sliced circular surface by moment equilibrium about the centre
+/// (on a non-circular surface these formulas are not an equilibrium: use Spencer.hpp):
 ///  - Bishop's simplified method (Bishop 1955): interslice shear neglected, vertical force
 ///    equilibrium of each slice,
 ///      F = sum[(c' b + (W - u b) tan phi') / m_alpha] / sum[W sin alpha],
@@ -8,14 +9,15 @@
 ///    solved by fixed-point iteration on F;
 ///  - the ordinary method of slices (Fellenius 1936): all interslice forces neglected,
 ///      F = sum[c' l + (W cos(alpha) - u l) tan phi'] / sum[W sin alpha],  l = b / cos(alpha).
-/// Both use the positive part of u: suction is not counted as strength here (the unsaturated
-/// strength of the materials comes with the integration, P13 item 1). A mass that slides
-/// towards -x (sum W sin alpha < 0) is handled by mirroring (alpha -> -alpha).
+/// Both use the positive part of u: negative pore pressure is not counted as strength through
+/// u; matric suction enters only through Slice::suction_strength, added to c' as an apparent
+/// cohesion (c' -> c' + S in both formulas). A mass that slides towards +x
+/// (sum W sin alpha < 0) is handled by mirroring (alpha -> -alpha).
 
 #include <vector>
 
 #include "argine/core/Types.hpp"
-#include "argine/slopestability/CircularSlip.hpp"
+#include "argine/slopestability/Slice.hpp"
 
 namespace argine {
 

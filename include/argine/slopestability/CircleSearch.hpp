@@ -2,9 +2,11 @@
 /// @file CircleSearch.hpp
 /// The critical circle of a section: a grid of centres and, for each centre, a range of
 /// tangent elevations (radius = centre_y - tangent_y, i.e. circles tangent to horizontal
-/// lines), Bishop's F of each, then the grid repeatedly refined around the lowest F.
+/// lines), Bishop's F of each (or the F of another method, searchCriticalCircleBy), then the
+/// grid repeatedly refined around the lowest F.
 
 #include <limits>
+#include <functional>
 #include <vector>
 
 #include "argine/core/Types.hpp"
@@ -33,21 +35,31 @@ struct CircleSearchGrid {
   /// The sliding mass must lie between these abscissae (m), e.g. one side of a levee.
   Real mass_x_min = -std::numeric_limits<Real>::infinity();
   Real mass_x_max = std::numeric_limits<Real>::infinity();
+  bool split_at_materials = false;  ///< sliceCircle's option: no base across two materials
 };
 
 /// The result: the critical circle, its Bishop F and slices, and the search's bookkeeping.
 struct CriticalCircle {
   bool found = false;
   SlipCircle circle;
-  FactorOfSafety bishop;
-  FactorOfSafety ordinary;  ///< the ordinary method on the same circle, for comparison
-  SlipMass mass;            ///< the slice table of the critical circle
-  int evaluated = 0;        ///< circles tried
-  int rejected = 0;         ///< of which no slip mass or an inadmissible F
+  FactorOfSafety objective;  ///< F of the searched method (searchCriticalCircle: Bishop)
+  FactorOfSafety bishop;     ///< Bishop's F on the critical circle
+  FactorOfSafety ordinary;   ///< the ordinary method on the same circle, for comparison
+  SlipMass mass;             ///< the slice table of the critical circle
+  int evaluated = 0;         ///< circles tried
+  int rejected = 0;          ///< of which no slip mass or an inadmissible F
 };
 
 /// Lowest Bishop F over the grid (see the file comment).
 CriticalCircle searchCriticalCircle(const SlopeSection& section, const CircleSearchGrid& grid,
                                     const BishopOptions& options = {});
+
+/// The F of a method on a sliced circle (admissible = false: not a candidate).
+using CircleObjective = std::function<FactorOfSafety(const SlipMass&, const SlipCircle&)>;
+
+/// Lowest F of `objective` over the grid, by the same passes; `bishop` and `ordinary` of the
+/// result are Bishop's (default options) and the ordinary F on the critical circle.
+CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleSearchGrid& grid,
+                                      const CircleObjective& objective);
 
 }  // namespace argine

@@ -36,7 +36,14 @@ struct BaseStrength {
   Real suction_strength = 0;  ///< (Pa), >= 0
 };
 
-/// The section: ground surface, layers from the top down, pore pressure.
+/// A vertical load on the ground surface, varying linearly from q_start at x_start to q_end
+/// at x_end (Pa, downwards positive), e.g. a surcharge strip.
+struct SurfaceLoad {
+  Real x_start = 0, x_end = 0;
+  Real q_start = 0, q_end = 0;
+};
+
+/// The section: ground surface, layers from the top down, pore pressure, surface loads.
 /// Layer tops may touch (a layer pinching out) but must not cross.
 struct SlopeSection {
   Polyline ground;                ///< ground surface y(x) (m); slip surfaces must stay inside it
@@ -55,6 +62,9 @@ struct SlopeSection {
   std::function<BaseStrength(Real, Real, Real)> strength_field;
   /// Lowest elevation a slip surface may reach (m), e.g. a rigid base; -inf: no limit.
   Real floor = -std::numeric_limits<Real>::infinity();
+  /// Vertical surface loads; a slice carries the load on its top as part of its weight
+  /// (a vertical force on the slice's vertical line acts like weight in every method).
+  std::vector<SurfaceLoad> loads;
 
   /// Index of the layer at (x, y): the deepest layer whose top lies at or above y (the first
   /// layer when y is above every top).
@@ -72,6 +82,9 @@ struct SlopeSection {
   /// y_bottom and y_top (N/m): width times the sum over the layers of gamma times the
   /// thickness of the layer inside [y_bottom, y_top].
   Real columnWeight(Real x, Real y_bottom, Real y_top, Real width) const;
+
+  /// Resultant of the surface loads between x0 < x1 (N/m): the exact integral of q.
+  Real surfaceLoad(Real x0, Real x1) const;
 };
 
 }  // namespace argine

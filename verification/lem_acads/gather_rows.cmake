@@ -1,0 +1,15 @@
+# Gathers the per-problem CSV files lem_<case>.csv written by lem_acads into lem_acads.csv
+# (one header, one row per problem). Usage: cmake -DDIR=... -DCASES="a;b" -P gather_rows.cmake
+set(table "")
+foreach(case IN LISTS CASES)
+  set(file "${DIR}/lem_${case}.csv")
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "missing ${file}: run the verification_lem_${case} test first")
+  endif()
+  file(STRINGS "${file}" lines)
+  list(GET lines 0 header)
+  list(GET lines 1 row)
+  string(APPEND table "${row}\n")
+endforeach()
+file(WRITE "${DIR}/lem_acads.csv" "${header}\n${table}")
+message(STATUS "wrote ${DIR}/lem_acads.csv")
