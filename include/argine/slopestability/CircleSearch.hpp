@@ -5,8 +5,8 @@
 /// lines), Bishop's F of each (or the F of another method, searchCriticalCircleBy), then the
 /// grid repeatedly refined around the lowest F.
 
-#include <limits>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "argine/core/Types.hpp"
