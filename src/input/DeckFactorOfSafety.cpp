@@ -35,6 +35,7 @@ FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present)
   spec.mass_x_range = rangeOf(section, "Mass X Range (m)");
   spec.grid_count = static_cast<int>(section.integer("Grid Count"));
   spec.refinements = static_cast<int>(section.integer("Refinements"));
+  spec.search_starts = static_cast<int>(section.integer("Search Starts"));
   spec.slices = static_cast<int>(section.integer("Slices"));
   spec.min_depth = section.real("Minimum Depth (m)");
   const std::string suction = section.word("Suction Strength");

@@ -737,7 +737,7 @@ ListSchema factorOfSafetyKeys() {
   ListSchema fs;
   fs.add(KeySpec::reals("Centre X (m)", "m", 2,
                         "range of the trial circles' centre abscissae; default: the ground's "
-                        "extent"));
+                        "extent within Mass X Range (m)"));
   fs.add(KeySpec::reals("Centre Y (m)", "m", 2,
                         "range of the centre elevations; default: from the top of the ground "
                         "to twice the height of the section above it"));
@@ -757,6 +757,13 @@ ListSchema factorOfSafetyKeys() {
              .atLeast(0)
              .atMost(20)
              .byDefault(3LL));
+  fs.add(KeySpec::integer("Search Starts",
+                          "refinements start from this many of the first pass's local minima, "
+                          "lowest first; the lowest F of all is the result (1: from the best "
+                          "grid point only)")
+             .atLeast(1)
+             .atMost(100)
+             .byDefault(8LL));
   fs.add(KeySpec::integer("Slices", "slices of each trial mass")
              .atLeast(5)
              .atMost(2000)

@@ -65,20 +65,22 @@ SectionPoints sectionPointsOf(const MaterialPoints& points, Real gravity) {
 }
 
 SlopeSection sectionForFactorOfSafety(const FactorOfSafetySpec& spec, const SectionPoints& points,
-                                      const std::vector<MaterialSpec>& materials) {
+                                      const std::vector<MaterialSpec>& materials, Real gravity) {
+  const Real water_unit_weight = materials.at(0).liquid.density * gravity;
   const SuctionStrength mode = spec.suction;
   const Real phi_b = spec.suction_friction_angle;
   MaterialStrength strength = [materials, mode, phi_b](int m, Real p_L, Real S_L) {
     return slipSurfaceStrength(materials.at(static_cast<std::size_t>(m)), mode, phi_b, p_L, S_L);
   };
-  if (spec.ground_surface.empty()) return sectionFromPoints(points, strength, spec.cell_size);
+  if (spec.ground_surface.empty())
+    return sectionFromPoints(points, strength, spec.cell_size, nullptr, water_unit_weight);
   std::vector<Real> gx, gy;
   for (const auto& vertex : spec.ground_surface) {
     gx.push_back(vertex[0]);
     gy.push_back(vertex[1]);
   }
   const Polyline ground(gx, gy);
-  return sectionFromPoints(points, strength, spec.cell_size, &ground);
+  return sectionFromPoints(points, strength, spec.cell_size, &ground, water_unit_weight);
 }
 
 CircleSearchGrid searchGridFor(const FactorOfSafetySpec& spec, const SlopeSection& section) {
@@ -86,7 +88,13 @@ CircleSearchGrid searchGridFor(const FactorOfSafetySpec& spec, const SlopeSectio
   const Real top = *std::max_element(g.y.begin(), g.y.end());
   const Real height = top - section.floor;
   CircleSearchGrid grid;
-  const std::array<Real, 2> cx = spec.centre_x.value_or(std::array<Real, 2>{g.xFirst(), g.xLast()});
+  // Unset centre abscissae: over the ground, or over the part of it the mass may occupy.
+  std::array<Real, 2> ground_x{g.xFirst(), g.xLast()};
+  if (spec.mass_x_range) {
+    ground_x[0] = std::max(ground_x[0], (*spec.mass_x_range)[0]);
+    ground_x[1] = std::min(ground_x[1], (*spec.mass_x_range)[1]);
+  }
+  const std::array<Real, 2> cx = spec.centre_x.value_or(ground_x);
   const std::array<Real, 2> cy = spec.centre_y.value_or(std::array<Real, 2>{top, top + 2 * height});
   const std::array<Real, 2> ty = spec.tangent_y.value_or(std::array<Real, 2>{section.floor, top});
   grid.centre_x_min = cx[0];
@@ -97,6 +105,7 @@ CircleSearchGrid searchGridFor(const FactorOfSafetySpec& spec, const SlopeSectio
   grid.tangent_y_max = ty[1];
   grid.centre_x_count = grid.centre_y_count = grid.tangent_count = spec.grid_count;
   grid.refinements = spec.refinements;
+  grid.starts = spec.search_starts;
   grid.slice_count = spec.slices;
   grid.min_depth = spec.min_depth;
   if (spec.mass_x_range) {
@@ -110,7 +119,7 @@ CriticalCircle criticalCircleOf(const FactorOfSafetySpec& spec, const MaterialPo
                                 const std::vector<MaterialSpec>& materials, Real gravity) {
   const SectionPoints section_points = sectionPointsOf(points, gravity);
   if (section_points.size() == 0 || !(gravity > 0)) return CriticalCircle{};
-  const SlopeSection section = sectionForFactorOfSafety(spec, section_points, materials);
+  const SlopeSection section = sectionForFactorOfSafety(spec, section_points, materials, gravity);
   return searchCriticalCircle(section, searchGridFor(spec, section));
 }
 

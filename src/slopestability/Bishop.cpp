@@ -10,14 +10,14 @@ namespace {
 
 /// The sign that makes the driving moment sum W sin alpha non-negative: -1 mirrors a mass
 /// sliding towards +x into one sliding towards -x.
-Real slideSign(const std::vector<Slice>& slices) {
-  Real driving = 0;
+Real slideSign(const std::vector<Slice>& slices, Real external_driving) {
+  Real driving = external_driving;
   for (const Slice& s : slices) driving += s.weight * std::sin(s.base_angle);
   return driving < 0 ? Real(-1) : Real(1);
 }
 
-Real drivingSum(const std::vector<Slice>& slices, Real sign) {
-  Real driving = 0;
+Real drivingSum(const std::vector<Slice>& slices, Real sign, Real external_driving) {
+  Real driving = sign * external_driving;
   for (const Slice& s : slices) driving += s.weight * std::sin(sign * s.base_angle);
   return driving;
 }
@@ -28,10 +28,10 @@ Real bishopMAlpha(Real alpha, Real friction_angle, Real factor) {
   return std::cos(alpha) * (1 + std::tan(alpha) * std::tan(friction_angle) / factor);
 }
 
-FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices) {
+FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices, Real external_driving) {
   FactorOfSafety result;
-  const Real sign = slideSign(slices);
-  result.driving = drivingSum(slices, sign);
+  const Real sign = slideSign(slices, external_driving);
+  result.driving = drivingSum(slices, sign, external_driving);
   result.converged = true;
   if (!(result.driving > 0)) return result;
   Real resisting = 0;
@@ -48,10 +48,11 @@ FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices) {
   return result;
 }
 
-FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOptions& options) {
+FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOptions& options,
+                                Real external_driving) {
   FactorOfSafety result;
-  const Real sign = slideSign(slices);
-  result.driving = drivingSum(slices, sign);
+  const Real sign = slideSign(slices, external_driving);
+  result.driving = drivingSum(slices, sign, external_driving);
   if (!(result.driving > 0)) return result;
 
   // m_alpha > 0 for every slice needs F > F_zero = max(-tan(alpha) tan(phi')) (only slices
@@ -65,7 +66,7 @@ FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOp
         std::max(zero_m_factor, -std::tan(sign * s.base_angle) * std::tan(s.friction_angle));
   }
   Real factor = options.initial_guess;
-  if (!(factor > 0)) factor = ordinaryMethodOfSlices(slices).value;
+  if (!(factor > 0)) factor = ordinaryMethodOfSlices(slices, external_driving).value;
   if (!(factor > zero_m_factor)) factor = zero_m_factor > 0 ? 2 * zero_m_factor : Real(1);
   for (int k = 1; k <= options.max_iterations; ++k) {
     Real resisting = 0;

@@ -43,6 +43,13 @@ std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const Sli
   return crossings;
 }
 
+Real endForceDriving(const SlipMass& mass, const SlipCircle& circle) {
+  Real driving = 0;
+  for (const HorizontalForce& h : mass.end_forces)
+    driving -= h.force * (circle.centre_y - h.y) / circle.radius;
+  return driving;
+}
+
 SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice_count,
                      bool split_at_materials) {
   SlipMass mass;
@@ -76,21 +83,12 @@ SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& c, int slice
     return mass;
   }
 
-  // Slice boundaries: equal widths, plus the ground and layer-top vertices inside the mass.
-  std::vector<Real> extra = sectionVertices(section);
-  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
   const SlipBase base{
       [&c](Real x) { return lowerArcY(c, x); },
       [&c](Real x) {
         return std::asin(std::clamp((x - c.centre_x) / c.radius, Real(-1), Real(1)));
       }};
-  if (split_at_materials) {
-    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
-    extra.insert(extra.end(), crossings.begin(), crossings.end());
-    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
-  }
-  mass.slices = sliceColumns(section, bounds, base);
-  mass.valid = true;
+  sliceMass(section, base, slice_count, split_at_materials, {}, mass);
   return mass;
 }
 

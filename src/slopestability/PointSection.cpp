@@ -57,6 +57,15 @@ PointRaster::PointRaster(const SectionPoints& points, Real cell_size) {
     cell.volume += v;
     cell.weight += points.weight[p];
     cell.pressure_volume += points.pore_pressure[p] * v;
+    const Real dx = points.x[p] - (x0_ + (i + 0.5) * cell_);
+    const Real dy = points.y[p] - (y0_ + (j + 0.5) * cell_);
+    cell.sx += v * dx;
+    cell.sy += v * dy;
+    cell.sxx += v * dx * dx;
+    cell.sxy += v * dx * dy;
+    cell.syy += v * dy * dy;
+    cell.spx += v * points.pore_pressure[p] * dx;
+    cell.spy += v * points.pore_pressure[p] * dy;
     cell.saturation_volume += points.saturation[p] * v;
     material_volume[c * static_cast<std::size_t>(materials) +
                     static_cast<std::size_t>(points.material[p])] += v;
@@ -67,6 +76,34 @@ PointRaster::PointRaster(const SectionPoints& points, Real cell_size) {
         points.y[p] + half > points.y[static_cast<std::size_t>(top)] +
                                  0.5 * std::sqrt(points.volume[static_cast<std::size_t>(top)]))
       top = static_cast<int>(p);
+  }
+  for (Cell& c : cells_) {
+    if (!(c.volume > 0)) continue;
+    // Weighted least squares for (a, b, c): the 3 x 3 normal equations by Cramer's rule.
+    const Real m[3][3] = {{c.volume, c.sx, c.sy}, {c.sx, c.sxx, c.sxy}, {c.sy, c.sxy, c.syy}};
+    const Real r[3] = {c.pressure_volume, c.spx, c.spy};
+    const auto det3 = [](const Real a[3][3]) {
+      return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+             a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+             a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const Real det = det3(m);
+    // Degenerate (fewer than three points or all in a line): relative to V (d^2 V)^2.
+    const Real scale = c.volume * std::pow(cell_ * cell_ * c.volume, 2);
+    if (!(std::abs(det) > 1e-10 * scale)) {
+      c.plane_a = c.pressure_volume / c.volume;
+      continue;
+    }
+    Real solution[3];
+    for (int k = 0; k < 3; ++k) {
+      Real mk[3][3];
+      for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) mk[row][col] = col == k ? r[row] : m[row][col];
+      solution[k] = det3(mk) / det;
+    }
+    c.plane_a = solution[0];
+    c.plane_b = solution[1];
+    c.plane_c = solution[2];
   }
   for (std::size_t c = 0; c < cells_.size(); ++c) {
     const Real* volumes = &material_volume[c * static_cast<std::size_t>(materials)];
@@ -152,12 +189,23 @@ Real PointRaster::interpolate(Real x, Real y, Real Cell::*numerator) const {
   return filled < 0 ? 0 : cell(i, filled).*numerator / cell(i, filled).volume;
 }
 
+Real PointRaster::planePressure(int i, int j, Real x, Real y) const {
+  const Cell& c = cell(i, j);
+  return c.plane_a + c.plane_b * (x - (x0_ + (i + 0.5) * cell_)) +
+         c.plane_c * (y - (y0_ + (j + 0.5) * cell_));
+}
+
 Real PointRaster::porePressure(Real x, Real y) const {
-  return interpolate(x, y, &Cell::pressure_volume);
+  const int i = column(x), filled = filledRow(i, row(y));
+  return filled < 0 ? 0 : planePressure(i, filled, x, y);
 }
 
 Real PointRaster::saturation(Real x, Real y) const {
   return interpolate(x, y, &Cell::saturation_volume);
+}
+
+Real PointRaster::surfaceWaterPressure(Real x) const {
+  return std::max(porePressure(x, ground_.at(x)), Real(0));
 }
 
 int PointRaster::material(Real x, Real y) const {
@@ -166,7 +214,7 @@ int PointRaster::material(Real x, Real y) const {
 }
 
 SlopeSection sectionFromPoints(const SectionPoints& points, MaterialStrength strength,
-                               Real cell_size, const Polyline* ground) {
+                               Real cell_size, const Polyline* ground, Real water_unit_weight) {
   const auto raster = std::make_shared<const PointRaster>(points, cell_size);
   SlopeSection section;
   section.ground = ground ? *ground : raster->ground();
@@ -176,6 +224,8 @@ SlopeSection sectionFromPoints(const SectionPoints& points, MaterialStrength str
     return raster->columnWeightDensity(x, y_bottom, y_top);
   };
   section.pore_pressure_field = [raster](Real x, Real y) { return raster->porePressure(x, y); };
+  section.water_unit_weight = water_unit_weight;
+  section.ponded_pressure_field = [raster](Real x) { return raster->surfaceWaterPressure(x); };
   section.strength_field = [raster, strength](Real x, Real y, Real u) {
     const int material = raster->material(x, y);
     if (material < 0) return BaseStrength{};

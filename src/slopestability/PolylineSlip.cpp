@@ -71,18 +71,9 @@ SlipMass slicePolyline(const SlopeSection& section, const Polyline& surface, int
     return mass;
   }
 
-  std::vector<Real> extra = sectionVertices(section);
-  extra.insert(extra.end(), surface.x.begin(), surface.x.end());
-  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
   const SlipBase base{[&surface](Real x) { return surface.at(x); },
                       [&surface](Real x) { return segmentAngle(surface, x); }};
-  if (split_at_materials) {
-    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
-    extra.insert(extra.end(), crossings.begin(), crossings.end());
-    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
-  }
-  mass.slices = sliceColumns(section, bounds, base);
-  mass.valid = true;
+  sliceMass(section, base, slice_count, split_at_materials, surface.x, mass);
   return mass;
 }
 

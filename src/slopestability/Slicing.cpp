@@ -30,6 +30,9 @@ std::vector<Real> sectionVertices(const SlopeSection& section) {
     const std::vector<Real>& top = section.layers[i].top.x;
     xs.insert(xs.end(), top.begin(), top.end());
   }
+  if (!section.phreatic.empty() && !section.ponded_pressure_field) {  // ponding linear per slice
+    xs.insert(xs.end(), section.phreatic.x.begin(), section.phreatic.x.end());
+  }
   for (const SurfaceLoad& load : section.loads) {
     xs.push_back(load.x_start);
     xs.push_back(load.x_end);
@@ -64,6 +67,23 @@ std::vector<Real> materialBoundaryCrossings(const SlopeSection& section,
   return crossings;
 }
 
+std::vector<HorizontalForce> pondedWaterEndForces(const SlopeSection& section, Real entry_x,
+                                                  Real exit_x) {
+  // Water of depth d = p / gamma_w standing against a vertical end of the mass pushes on it
+  // with gamma_w d^2 / 2 at d / 3 above the ground there: towards +x at the entry (left) end,
+  // towards -x at the exit end. With the water's weight on the slices this is the whole
+  // force and moment of the water on the mass (the water above the mass is in equilibrium).
+  std::vector<HorizontalForce> forces;
+  const Real gamma = section.water_unit_weight;
+  for (const auto& [x, towards] : {std::pair<Real, Real>{entry_x, 1}, {exit_x, -1}}) {
+    const Real p = section.pondedPressure(x);
+    if (!(p > 0) || !(gamma > 0)) continue;
+    const Real depth = p / gamma;
+    forces.push_back({towards * 0.5 * p * depth, section.ground.at(x) + depth / 3});
+  }
+  return forces;
+}
+
 std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<Real>& bounds,
                                 const SlipBase& base) {
   std::vector<Slice> slices;
@@ -76,6 +96,7 @@ std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<R
     s.base_angle = base.inclination(s.x_mid);
     s.weight = s.top_y > s.base_y ? section.columnWeight(s.x_mid, s.base_y, s.top_y, s.width) : 0;
     s.weight += section.surfaceLoad(bounds[i - 1], bounds[i]);
+    s.weight += section.pondedPressure(s.x_mid) * s.width;  // water standing on the slice
     s.pore_pressure = section.porePressure(s.x_mid, s.base_y);
     const BaseStrength strength = section.strengthAt(s.x_mid, s.base_y, s.pore_pressure);
     s.layer = strength.layer;
@@ -85,6 +106,23 @@ std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<R
     slices.push_back(s);
   }
   return slices;
+}
+
+void sliceMass(const SlopeSection& section, const SlipBase& base, int slice_count,
+               bool split_at_materials, const std::vector<Real>& surface_vertices, SlipMass& mass) {
+  // Slice boundaries: equal widths, plus the ground's, layer tops' and the surface's vertices
+  // inside the mass (and, on request, where the base crosses a layer top).
+  std::vector<Real> extra = sectionVertices(section);
+  extra.insert(extra.end(), surface_vertices.begin(), surface_vertices.end());
+  std::vector<Real> bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  if (split_at_materials) {
+    const std::vector<Real> crossings = materialBoundaryCrossings(section, bounds, base);
+    extra.insert(extra.end(), crossings.begin(), crossings.end());
+    bounds = sliceBoundaries(mass.entry_x, mass.exit_x, slice_count, extra);
+  }
+  mass.slices = sliceColumns(section, bounds, base);
+  mass.end_forces = pondedWaterEndForces(section, mass.entry_x, mass.exit_x);
+  mass.valid = true;
 }
 
 }  // namespace argine

@@ -30,6 +30,12 @@ BaseStrength SlopeSection::strengthAt(Real xq, Real yq, Real u) const {
   return strength;
 }
 
+Real SlopeSection::pondedPressure(Real xq) const {
+  if (ponded_pressure_field) return std::max(ponded_pressure_field(xq), Real(0));
+  if (phreatic.empty()) return 0;
+  return water_unit_weight * std::max(phreatic.at(xq) - ground.at(xq), Real(0));
+}
+
 Real SlopeSection::columnWeight(Real xq, Real y_bottom, Real y_top, Real width) const {
   if (column_weight_field) return width * column_weight_field(xq, y_bottom, y_top);
   Real weight_per_width = 0;

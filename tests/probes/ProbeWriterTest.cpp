@@ -7,27 +7,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "CsvRows.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/probes/ProbeWriter.hpp"
 
 namespace argine {
 namespace {
-
-std::vector<std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 /// Three points: id 0 at (0, 0), id 1 at (1, 0), id 2 at (0, 1); p_L 10, 20, 30 Pa;
 /// S_L 1, 0.5, 0.8; all carry liquid. `reversed` stores them in reverse index order (as a
@@ -110,7 +96,7 @@ TEST(ProbeWriter, FollowsPointsByIdAndWritesSections) {
   EXPECT_EQ(writer.pointIds()[0], 1);
   writer.write(0.5, threePoints(true));  // indices permuted: the probe must follow id 1
 
-  const auto point = readCsv(dir + "/run_probe_corner.csv");
+  const auto point = readCsvRows(dir + "/run_probe_corner.csv");
   ASSERT_EQ(point.size(), 1u);
   EXPECT_EQ(point[0][0], 0.5);    // time
   EXPECT_EQ(point[0][1], 1);      // id
@@ -119,7 +105,7 @@ TEST(ProbeWriter, FollowsPointsByIdAndWritesSections) {
   EXPECT_EQ(point[0][8], 20);     // p_L
   EXPECT_EQ(point[0][9], 0.5);    // S_L
 
-  const auto rows = readCsv(dir + "/run_section_bottom.csv");
+  const auto rows = readCsvRows(dir + "/run_section_bottom.csv");
   ASSERT_EQ(rows.size(), 3u);
   // Sample 0 at (0,0) sits on point 0: its values. Sample 1 at (0.5, 0): distances 0.5, 0.5,
   // sqrt(1.25) = 1.1180340; inverse-distance weights 2, 2, 0.8944272 (sum 4.8944272):
@@ -132,7 +118,7 @@ TEST(ProbeWriter, FollowsPointsByIdAndWritesSections) {
   EXPECT_NEAR(rows[1][6], 0.7591372, 1e-7);
   EXPECT_EQ(rows[1][7], 3);  // points averaged
 
-  const auto left = readCsv(dir + "/run_section_left.csv");
+  const auto left = readCsvRows(dir + "/run_section_left.csv");
   ASSERT_EQ(left.size(), 2u);  // ids 0 and 2 lie on x = 0; id 1 is 1 m away
   for (const auto& row : left) EXPECT_NE(row[1], 1);
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "CsvRows.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -74,21 +75,6 @@ std::string deckText(const std::string& extra_stage_key, bool with_section) {
   return deck;
 }
 
-std::vector<std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 Deck parse(const std::string& text) {
   return parseDeck(*Teuchos::getParametersFromYamlString(text), "");
 }
@@ -132,7 +118,7 @@ TEST(FactorOfSafetyRun, EveryOutputAndTheHandOver) {
 
   // Rows at t = 0, at the first output of 'hold' (where F < 5 ends it) and at the end of
   // 'next', 0.005 s later.
-  const auto rows = readCsv((dir / "slope_factor_of_safety.csv").string());
+  const auto rows = readCsvRows((dir / "slope_factor_of_safety.csv").string());
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_NEAR(rows[0][0], 0, 1e-12);
   EXPECT_NEAR(rows[1][0], 0.005, 1e-9);
@@ -162,7 +148,7 @@ TEST(FactorOfSafetyRun, EveryOutputAndTheHandOver) {
             << exact.bishop.value << "\n";
   EXPECT_NEAR(rows[0][1], exact.bishop.value, 0.025 * exact.bishop.value);
   // the slice table: the slices of each of the three evaluations
-  const auto slices = readCsv((dir / "slope_critical_slices.csv").string());
+  const auto slices = readCsvRows((dir / "slope_critical_slices.csv").string());
   EXPECT_GE(slices.size(), 3u * 50u);
 }
 

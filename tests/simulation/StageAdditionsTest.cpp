@@ -10,6 +10,7 @@
 #include <limits>
 #include <sstream>
 
+#include "CsvRows.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -117,21 +118,6 @@ const std::string kDeck = R"(argine:
   Output: {Name: column}
 )";
 
-std::vector<std::vector<double>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 TEST(SimulationStages, K0StateMaterialChangeProbesAndInitialDiagnostics) {
   const Deck deck = parseDeck(*Teuchos::getParametersFromYamlString(kDeck), "");
   const auto dir = std::filesystem::path(::testing::TempDir()) / "argine_simulation_stages";
@@ -174,7 +160,7 @@ TEST(SimulationStages, K0StateMaterialChangeProbesAndInitialDiagnostics) {
   // t = 0 diagnostics row: the liquid mass of the points, sum n rho_L V over the 0.1 m3 column
   // = 0.4 * 0.1 * rho_L0 * mean exp(p_L/K_L), with p_L/K_L <= 9810/1e8 ~ 1e-4: 40.0 kg/m to
   // 1e-4 (40 * (1 + 4.9e-5) = 40.00196); a positive step; no kinetic energy at rest.
-  const auto diagnostics = readCsv((dir / "column_diagnostics.csv").string());
+  const auto diagnostics = readCsvRows((dir / "column_diagnostics.csv").string());
   ASSERT_GE(diagnostics.size(), 3u);
   EXPECT_EQ(diagnostics[0][0], 0);
   EXPECT_GT(diagnostics[0][1], 0);
@@ -182,11 +168,11 @@ TEST(SimulationStages, K0StateMaterialChangeProbesAndInitialDiagnostics) {
   EXPECT_NEAR(diagnostics[0][4], 40.00196, 2e-4);
 
   // Probes: one row per output (t = 0 and the end of each stage), the same point id.
-  const auto middle = readCsv((dir / "column_probe_middle.csv").string());
+  const auto middle = readCsvRows((dir / "column_probe_middle.csv").string());
   ASSERT_EQ(middle.size(), 3u);
   EXPECT_EQ(middle[0][1], middle[2][1]);
   EXPECT_NEAR(middle[0][3], 0.5, 0.05);
-  const auto axis = readCsv((dir / "column_section_axis.csv").string());
+  const auto axis = readCsvRows((dir / "column_section_axis.csv").string());
   EXPECT_EQ(axis.size(), 15u);  // 5 samples x 3 outputs
 }
 

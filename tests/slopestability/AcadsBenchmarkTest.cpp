@@ -15,28 +15,15 @@
 #include <cmath>
 #include <iostream>
 
+#include "AcadsSlope.hpp"
 #include "argine/slopestability/CircleSearch.hpp"
 
 namespace argine {
 namespace {
 
-constexpr Real kDegree = M_PI / 180;
-
 TEST(AcadsBenchmark, Problem1aSimpleSlope) {
-  SlopeSection s;
-  s.ground = Polyline({20, 30, 50, 70}, {25, 25, 35, 35});
-  s.layers.push_back({"soil", s.ground, 20e3, 3e3, 19.6 * kDegree});
-  s.floor = 20;
-
-  CircleSearchGrid grid;
-  grid.centre_x_min = 25;
-  grid.centre_x_max = 55;
-  grid.centre_y_min = 36;
-  grid.centre_y_max = 66;
-  grid.tangent_y_min = 20;
-  grid.tangent_y_max = 34;
-  grid.refinements = 3;
-  grid.slice_count = 50;
+  const SlopeSection s = acads::problem1a();
+  const CircleSearchGrid grid = acads::problem1aGrid();
 
   const CriticalCircle critical = searchCriticalCircle(s, grid);
   ASSERT_TRUE(critical.found);

@@ -6,32 +6,16 @@
 #include <cmath>
 #include <iostream>
 
+#include "AcadsSlope.hpp"
 #include "argine/slopestability/CircleSearch.hpp"
 #include "argine/slopestability/PointSection.hpp"
 
 namespace argine {
 namespace {
 
-constexpr Real kDegree = M_PI / 180;
-
-/// Points on a lattice of spacing h (cell centres of an h-grid) below `ground`, above
-/// y_bottom, between x_left and x_right; unit weight gamma; p_L = p(x, y).
-template <class Pressure>
-SectionPoints latticeBelow(const Polyline& ground, Real x_left, Real x_right, Real y_bottom, Real h,
-                           Real gamma, Pressure p) {
-  SectionPoints pts;
-  for (Real x = x_left + h / 2; x < x_right; x += h)
-    for (Real y = y_bottom + h / 2; y < ground.at(x); y += h) {
-      pts.x.push_back(x);
-      pts.y.push_back(y);
-      pts.volume.push_back(h * h);
-      pts.weight.push_back(gamma * h * h);
-      pts.pore_pressure.push_back(p(x, y));
-      pts.saturation.push_back(1);
-      pts.material.push_back(0);
-    }
-  return pts;
-}
+using acads::kCohesion;
+using acads::kFriction;
+using acads::latticeBelow;
 
 TEST(PointRaster, BlockWeightsEnvelopeAndLinearPressure) {
   // A 2 m x 1 m block, h = 0.1 m, gamma = 20 kN/m3, hydrostatic p_L = 9810 (1 - y).
@@ -50,34 +34,32 @@ TEST(PointRaster, BlockWeightsEnvelopeAndLinearPressure) {
   // Weight per area of any column part: gamma times its height.
   EXPECT_NEAR(raster.columnWeightDensity(1.03, 0.0, 1.0), 20e3, 1e-8);
   EXPECT_NEAR(raster.columnWeightDensity(0.31, 0.27, 0.64), 20e3 * 0.37, 1e-8);
-  // A linear field is reproduced wherever the four surrounding cells hold points.
-  for (const auto& [x, y] : {std::pair<Real, Real>{0.5, 0.5}, {1.37, 0.21}, {0.77, 0.83}})
+  // A linear field is reproduced everywhere, up to the surface and the edges (least-squares
+  // planes per cell).
+  for (const auto& [x, y] :
+       {std::pair<Real, Real>{0.5, 0.5}, {1.37, 0.21}, {0.77, 0.83}, {0.63, 0.99}, {0.01, 0.02}})
     EXPECT_NEAR(raster.porePressure(x, y), 9810 * (1 - y), 1e-8) << x << ", " << y;
+  EXPECT_NEAR(raster.surfaceWaterPressure(0.9), 0, 1e-8);  // p_L = 0 at the surface y = 1
+  // Under half a metre of standing water, p_L = 9810 (1.5 - y): 4905 Pa on the ground.
+  const SectionPoints wet =
+      latticeBelow(top, 0, 2, 0, 0.1, 20e3, [](Real, Real y) { return 9810 * (1.5 - y); });
+  EXPECT_NEAR(PointRaster(wet, 0).surfaceWaterPressure(1.23), 4905, 1e-8);
   EXPECT_NEAR(raster.saturation(1, 0.5), 1, 1e-15);
   EXPECT_EQ(raster.material(1, 0.5), 0);
 }
 
 TEST(PointSection, AcadsProblem1aFromPointsAsFromItsPolygon) {
   // ACADS 1(a) (AcadsBenchmarkTest.cpp): c' = 3 kPa, phi' = 19.6 deg, gamma = 20 kN/m3, dry.
-  const Polyline ground({20, 30, 50, 70}, {25, 25, 35, 35});
-  SlopeSection polygon;
-  polygon.ground = ground;
-  polygon.layers.push_back({"soil", ground, 20e3, 3e3, 19.6 * kDegree});
-  polygon.floor = 20;
-  CircleSearchGrid grid;
-  grid.centre_x_min = 25;
-  grid.centre_x_max = 55;
-  grid.centre_y_min = 36;
-  grid.centre_y_max = 66;
-  grid.tangent_y_min = 20;
-  grid.tangent_y_max = 34;
-  const CriticalCircle exact = searchCriticalCircle(polygon, grid);
+  const Polyline ground = acads::problem1aGround();
+  const CircleSearchGrid grid = acads::problem1aGrid();
+  const CriticalCircle exact = searchCriticalCircle(acads::problem1a(), grid);
   ASSERT_TRUE(exact.found);
 
   const Real h = 0.1;  // spacing: 1 % of the slope height
-  const SectionPoints pts = latticeBelow(ground, 20, 70, 20, h, 20e3, [](Real, Real) { return 0; });
+  const SectionPoints pts =
+      latticeBelow(ground, 20, 70, 20, h, acads::kUnitWeight, [](Real, Real) { return 0; });
   const SlopeSection section = sectionFromPoints(pts, [](int, Real, Real) {
-    return BaseStrength{0, 3e3, 19.6 * kDegree, 0};
+    return BaseStrength{0, kCohesion, kFriction, 0};
   });
   const CriticalCircle points = searchCriticalCircle(section, grid);
   ASSERT_TRUE(points.found);
@@ -95,27 +77,18 @@ TEST(PointSection, PorePressureAndSuctionFromThePoints) {
   // at x = 70, below the ground everywhere (p_L = 9810 (h_w(x) - y), negative above it): the
   // positive pore pressure lowers F, a suction strength added by the strength callable raises it
   // again.
-  const Polyline ground({20, 30, 50, 70}, {25, 25, 35, 35});
+  const Polyline ground = acads::problem1aGround();
   const Polyline phreatic({20, 30, 70}, {24.9, 24.9, 31});
   const auto water = [&phreatic](Real x, Real y) { return 9810 * (phreatic.at(x) - y); };
-  const SectionPoints pts = latticeBelow(ground, 20, 70, 20, 0.1, 20e3, water);
-  CircleSearchGrid grid;
-  grid.centre_x_min = 25;
-  grid.centre_x_max = 55;
-  grid.centre_y_min = 36;
-  grid.centre_y_max = 66;
-  grid.tangent_y_min = 20;
-  grid.tangent_y_max = 34;
-  const auto plain = [](int, Real, Real) { return BaseStrength{0, 3e3, 19.6 * kDegree, 0}; };
+  const SectionPoints pts = latticeBelow(ground, 20, 70, 20, 0.1, acads::kUnitWeight, water);
+  const CircleSearchGrid grid = acads::problem1aGrid();
+  const auto plain = [](int, Real, Real) { return BaseStrength{0, kCohesion, kFriction, 0}; };
   const auto suction = [](int, Real p_L, Real S_L) {
-    return BaseStrength{0, 3e3, 19.6 * kDegree,
-                        S_L * std::max(-p_L, Real(0)) * std::tan(19.6 * kDegree)};
+    return BaseStrength{0, kCohesion, kFriction,
+                        S_L * std::max(-p_L, Real(0)) * std::tan(kFriction)};
   };
   // The polygon section with the phreatic line gives the reference of the wet case.
-  SlopeSection polygon;
-  polygon.ground = ground;
-  polygon.layers.push_back({"soil", ground, 20e3, 3e3, 19.6 * kDegree});
-  polygon.floor = 20;
+  SlopeSection polygon = acads::problem1a();
   polygon.phreatic = phreatic;
   const Real wet_exact = searchCriticalCircle(polygon, grid).bishop.value;
   const Real wet = searchCriticalCircle(sectionFromPoints(pts, plain), grid).bishop.value;

@@ -367,6 +367,7 @@ struct FactorOfSafetySpec {
   std::optional<std::array<Real, 2>> centre_x, centre_y, tangent_y;  ///< search ranges (m)
   int grid_count = 11;
   int refinements = 3;
+  int search_starts = 8;
   int slices = 50;
   Real min_depth = 0;                               ///< (m)
   std::optional<std::array<Real, 2>> mass_x_range;  ///< (m)

@@ -26,13 +26,14 @@ namespace argine {
 /// points that left the mesh (element < 0) are left out.
 SectionPoints sectionPointsOf(const MaterialPoints& points, Real gravity);
 
-/// The section of `points` for `spec`: the deck's ground if given, else the envelope.
+/// The section of `points` for `spec`: the deck's ground if given, else the envelope; water
+/// standing on the ground weighs rho_L g (the first material's liquid).
 SlopeSection sectionForFactorOfSafety(const FactorOfSafetySpec& spec, const SectionPoints& points,
-                                      const std::vector<MaterialSpec>& materials);
+                                      const std::vector<MaterialSpec>& materials, Real gravity);
 
 /// The search grid of `spec` on `section`: the deck's ranges, the unset ones from the ground
-/// (centre x over its extent; centre y from its top to twice the section's height above;
-/// tangents from the floor to the top).
+/// (centre x over its extent, or over the part of it the mass may occupy; centre y from its top to
+/// twice the section's height above; tangents from the floor to the top).
 CircleSearchGrid searchGridFor(const FactorOfSafetySpec& spec, const SlopeSection& section);
 
 /// Bishop's critical circle of `points` under gravity g for `spec`.

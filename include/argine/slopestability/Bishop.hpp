@@ -46,10 +46,12 @@ struct FactorOfSafety {
 Real bishopMAlpha(Real alpha, Real friction_angle, Real factor);
 
 /// Bishop's simplified factor of safety of `slices` (see the file comment).
-FactorOfSafety bishopSimplified(const std::vector<Slice>& slices,
-                                const BishopOptions& options = {});
+/// `external_driving` (N/m): horizontal forces' moment about the centre divided by R, in the
+/// sense of sum W sin(alpha) (endForceDriving of CircularSlip.hpp), added to the driving sum.
+FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOptions& options = {},
+                                Real external_driving = 0);
 
 /// The ordinary (Fellenius) factor of safety of `slices`; for cross-checking.
-FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices);
+FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices, Real external_driving = 0);
 
 }  // namespace argine

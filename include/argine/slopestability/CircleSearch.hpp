@@ -27,6 +27,9 @@ struct CircleSearchGrid {
   /// Passes after the first: each a grid of the same counts spanning one former spacing on
   /// either side of the best point, so the spacing shrinks by about (count - 1) / 2 a pass.
   int refinements = 3;
+  /// Refinements start from this many of the first pass's local minima, lowest first (1: from
+  /// its best point only); the lowest F over all of them is the result.
+  int starts = 1;
   int slice_count = 50;
   /// Circles whose deepest slice base lies less than this below the ground are not tried
   /// (m): in a cohesionless slope the critical circle otherwise shrinks to the surface,

@@ -30,6 +30,11 @@ std::vector<Real> lowerArcGroundCrossings(const SlopeSection& section, const Sli
 /// running out of the ground line, a base below section.floor.
 /// split_at_materials: also cut where the arc crosses a layer top (materialBoundaryCrossings,
 /// Slicing.hpp), so that no slice base straddles two materials.
+/// The moment of mass.end_forces about the circle's centre divided by R, in the sense of
+/// sum W sin(alpha) (clockwise positive: a force towards +x below the centre counts
+/// negative), the `external_driving` of Bishop.hpp:  -sum H (y_c - y_H) / R.
+Real endForceDriving(const SlipMass& mass, const SlipCircle& circle);
+
 SlipMass sliceCircle(const SlopeSection& section, const SlipCircle& circle, int slice_count,
                      bool split_at_materials = false);
 

@@ -52,11 +52,19 @@ class PointRaster {
   /// cell by cell (piecewise constant); a cell without points below the envelope takes its
   /// column's nearest cell with points.
   Real columnWeightDensity(Real x, Real y_bottom, Real y_top) const;
-  /// p_L at (x, y) (Pa): bilinear between the centres of the surrounding cells with points
-  /// (weights renormalised over those), else the nearest cell with points in the column.
+  /// p_L at (x, y) (Pa): the volume-weighted least-squares plane of the p_L of the points
+  /// in the cell at (x, y), or in its column's nearest cell with points; a cell whose points
+  /// do not span a plane (fewer than three, or in a line) takes their mean. Exact for a
+  /// linear p_L (hydrostatic, steady uniform seepage) up to the surface, where the
+  /// effective stress of a shallow slip surface is a small difference of large pressures.
   Real porePressure(Real x, Real y) const;
   /// S_L at (x, y) (-), as porePressure().
   Real saturation(Real x, Real y) const;
+  /// The pressure of water standing on the ground at x (Pa, >= 0): porePressure() at the
+  /// envelope, so that under a water level the weight of the standing water and the pore
+  /// pressures below come from the same planes; 0 where it is not positive (a dry or
+  /// unsaturated surface).
+  Real surfaceWaterPressure(Real x) const;
   /// The material of the largest volume in the cell at (x, y) or, if it is empty, in the
   /// nearest cell with points of its column; -1 if the column is empty.
   int material(Real x, Real y) const;
@@ -64,6 +72,10 @@ class PointRaster {
  private:
   struct Cell {
     Real volume = 0, weight = 0, pressure_volume = 0, saturation_volume = 0;
+    /// p_L plane about the cell centre, p = a + b (x - x_c) + c (y - y_c), from the moments
+    /// sum V (1, dx, dy) (1, dx, dy)^T and sum V p (1, dx, dy) (finished in the constructor).
+    Real sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, spx = 0, spy = 0;
+    Real plane_a = 0, plane_b = 0, plane_c = 0;
     int material = -1;  ///< of the largest volume
   };
   int column(Real x) const;
@@ -76,13 +88,16 @@ class PointRaster {
   Real cell_ = 0, x0_ = 0, y0_ = 0, bottom_ = 0;
   int nx_ = 0, ny_ = 0;
   std::vector<Cell> cells_;
+  Real planePressure(int i, int j, Real x, Real y) const;
   Polyline ground_;
 };
 
 /// The section of `points`: ground from the raster's envelope (or `ground` if given, e.g. the
 /// deck's surface), floor at the lowest point, column weights and pore pressures from the
-/// raster, strength from `strength` at each base's material, p_L and S_L.
+/// raster, strength from `strength` at each base's material, p_L and S_L, water standing on
+/// the ground from the surface points' p_L (surfaceWaterPressure with water_unit_weight).
 SlopeSection sectionFromPoints(const SectionPoints& points, MaterialStrength strength,
-                               Real cell_size = 0, const Polyline* ground = nullptr);
+                               Real cell_size = 0, const Polyline* ground = nullptr,
+                               Real water_unit_weight = 9810);
 
 }  // namespace argine

@@ -37,6 +37,14 @@ struct Slice {
   Real apparentCohesion() const { return cohesion + suction_strength; }
 };
 
+/// A horizontal force on the sliding mass (N per m run, positive towards +x) and the
+/// elevation of its line of action (m): the thrust of water standing against an end of the
+/// mass (PondedWater.hpp).
+struct HorizontalForce {
+  Real force = 0;
+  Real y = 0;
+};
+
 /// The sliding mass of a trial surface, or why there is none.
 struct SlipMass {
   bool valid = false;
@@ -44,6 +52,9 @@ struct SlipMass {
   Real entry_x = 0;           ///< leftmost point where the surface meets the ground (m)
   Real exit_x = 0;            ///< rightmost point (m)
   std::vector<Slice> slices;  ///< from left to right
+  /// Horizontal forces on the ends of the mass (water standing against them); the weight of
+  /// water standing on the mass is part of the slices' weights.
+  std::vector<HorizontalForce> end_forces;
 };
 
 }  // namespace argine

@@ -41,10 +41,23 @@ std::vector<Real> sectionVertices(const SlopeSection& section);
 std::vector<Real> materialBoundaryCrossings(const SlopeSection& section,
                                             const std::vector<Real>& bounds, const SlipBase& base);
 
+/// The thrusts of water standing against the ends of a mass between entry_x and exit_x
+/// (SlopeSection::pondedPressure there): gamma_w d^2 / 2 towards the mass, d / 3 above the
+/// ground.
+std::vector<HorizontalForce> pondedWaterEndForces(const SlopeSection& section, Real entry_x,
+                                                  Real exit_x);
+
 /// One slice per pair of consecutive boundaries: base midpoint from `base`, weight as the
 /// column weight at the midpoint times the width (midpoint rule) plus the surface load on the
-/// slice's top, u and material at the base midpoint. suction_strength is left 0.
+/// slice's top and the water standing on it (pondedPressure at the midpoint times the
+/// width), u and material at the base midpoint. suction_strength is left 0.
 std::vector<Slice> sliceColumns(const SlopeSection& section, const std::vector<Real>& bounds,
                                 const SlipBase& base);
+
+/// Slices `mass` (entry_x and exit_x set) over `base`: boundaries of sliceBoundaries with the
+/// section's vertices and `surface_vertices` (a polyline surface's), cut at layer tops when
+/// split_at_materials, the slices of sliceColumns and the water's end thrusts; valid = true.
+void sliceMass(const SlopeSection& section, const SlipBase& base, int slice_count,
+               bool split_at_materials, const std::vector<Real>& surface_vertices, SlipMass& mass);
 
 }  // namespace argine

@@ -62,6 +62,9 @@ struct SlopeSection {
   std::function<BaseStrength(Real, Real, Real)> strength_field;
   /// Lowest elevation a slip surface may reach (m), e.g. a rigid base; -inf: no limit.
   Real floor = -std::numeric_limits<Real>::infinity();
+  /// Pressure of water standing on the ground at x (Pa, >= 0), e.g. from the material
+  /// points at the surface; when set it replaces the phreatic line's ponding.
+  std::function<Real(Real)> ponded_pressure_field;
   /// Vertical surface loads; a slice carries the load on its top as part of its weight
   /// (a vertical force on the slice's vertical line acts like weight in every method).
   std::vector<SurfaceLoad> loads;
@@ -82,6 +85,11 @@ struct SlopeSection {
   /// y_bottom and y_top (N/m): width times the sum over the layers of gamma times the
   /// thickness of the layer inside [y_bottom, y_top].
   Real columnWeight(Real x, Real y_bottom, Real y_top, Real width) const;
+
+  /// Pressure of the water standing on the ground at x (Pa): ponded_pressure_field if set,
+  /// otherwise gamma_w max(h_w(x) - y_ground(x), 0) where the phreatic line lies above the
+  /// ground (a submerged slope), otherwise 0.
+  Real pondedPressure(Real x) const;
 
   /// Resultant of the surface loads between x0 < x1 (N/m): the exact integral of q.
   Real surfaceLoad(Real x0, Real x1) const;
