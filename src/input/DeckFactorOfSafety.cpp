@@ -29,6 +29,7 @@ FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present)
   FactorOfSafetySpec spec;
   spec.enabled = present;
   if (!present) return spec;
+  spec.spencer = section.word("Method") == "spencer";
   spec.centre_x = rangeOf(section, "Centre X (m)");
   spec.centre_y = rangeOf(section, "Centre Y (m)");
   spec.tangent_y = rangeOf(section, "Tangent Y (m)");

@@ -735,6 +735,13 @@ ListSchema checkpointKeys() {
 
 ListSchema factorOfSafetyKeys() {
   ListSchema fs;
+  fs.add(KeySpec::choice("Method", Words{"bishop", "spencer"},
+                         "bishop: Bishop's simplified method (moment equilibrium, horizontal "
+                         "interslice forces); spencer: Spencer's method (force and moment "
+                         "equilibrium, interslice forces at one inclination), moments about "
+                         "each circle's centre; the CSV also gives Bishop's and the ordinary "
+                         "method's F on the critical circle")
+             .byDefault(std::string("bishop")));
   fs.add(KeySpec::reals("Centre X (m)", "m", 2,
                         "range of the trial circles' centre abscissae; default: the ground's "
                         "extent within Mass X Range (m)"));

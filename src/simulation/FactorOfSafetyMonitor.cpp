@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "argine/simulation/SlipSurfaceStrength.hpp"
+#include "argine/slopestability/Spencer.hpp"
 
 namespace argine {
 
@@ -13,8 +14,8 @@ namespace {
 constexpr Real kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 const std::vector<std::string> kHistoryColumns{
-    "time",    "factor_of_safety", "ordinary_method", "centre_x",       "centre_y", "radius",
-    "entry_x", "exit_x",           "max_depth",       "sliding_weight", "circles",  "rejected"};
+    "time",    "factor_of_safety", "bishop",    "ordinary_method", "centre_x", "centre_y", "radius",
+    "entry_x", "exit_x",           "max_depth", "sliding_weight",  "circles",  "rejected"};
 
 const std::vector<std::string> kSliceColumns{"time",
                                              "slice",
@@ -120,7 +121,15 @@ CriticalCircle criticalCircleOf(const FactorOfSafetySpec& spec, const MaterialPo
   const SectionPoints section_points = sectionPointsOf(points, gravity);
   if (section_points.size() == 0 || !(gravity > 0)) return CriticalCircle{};
   const SlopeSection section = sectionForFactorOfSafety(spec, section_points, materials, gravity);
-  return searchCriticalCircle(section, searchGridFor(spec, section));
+  const CircleSearchGrid grid = searchGridFor(spec, section);
+  if (!spec.spencer) return searchCriticalCircle(section, grid);
+  return searchCriticalCircleBy(section, grid, [](const SlipMass& mass, const SlipCircle& c) {
+    SpencerOptions about_centre;
+    about_centre.use_moment_point = true;
+    about_centre.moment_x = c.centre_x;
+    about_centre.moment_y = c.centre_y;
+    return spencer(mass.slices, about_centre, mass.end_forces).factor;
+  });
 }
 
 FactorOfSafetyMonitor::FactorOfSafetyMonitor(const FactorOfSafetySpec& spec,
@@ -139,7 +148,7 @@ Real FactorOfSafetyMonitor::evaluate(Real time, const MaterialPoints& points,
   last_ = criticalCircleOf(spec_, points, materials, gravity);
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   if (!last_.found) {
-    history_->writeRow({time, nan, nan, nan, nan, nan, nan, nan, nan, nan,
+    history_->writeRow({time, nan, nan, nan, nan, nan, nan, nan, nan, nan, nan,
                         static_cast<Real>(last_.evaluated), static_cast<Real>(last_.rejected)});
     return nan;
   }
@@ -149,9 +158,10 @@ Real FactorOfSafetyMonitor::evaluate(Real time, const MaterialPoints& points,
     weight += s.weight;
   }
   const SlipCircle& c = last_.circle;
-  history_->writeRow({time, last_.bishop.value, last_.ordinary.value, c.centre_x, c.centre_y,
-                      c.radius, last_.mass.entry_x, last_.mass.exit_x, depth, weight,
-                      static_cast<Real>(last_.evaluated), static_cast<Real>(last_.rejected)});
+  history_->writeRow({time, last_.objective.value, last_.bishop.value, last_.ordinary.value,
+                      c.centre_x, c.centre_y, c.radius, last_.mass.entry_x, last_.mass.exit_x,
+                      depth, weight, static_cast<Real>(last_.evaluated),
+                      static_cast<Real>(last_.rejected)});
   if (slices_) {
     int k = 0;
     for (const Slice& s : last_.mass.slices)
@@ -160,7 +170,7 @@ Real FactorOfSafetyMonitor::evaluate(Real time, const MaterialPoints& points,
                          static_cast<Real>(s.layer), s.cohesion,
                          s.friction_angle * kDegreesPerRadian, s.suction_strength});
   }
-  return last_.bishop.value;
+  return last_.objective.value;
 }
 
 std::vector<std::uint64_t> FactorOfSafetyMonitor::fileBytes() const {

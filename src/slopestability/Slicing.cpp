@@ -79,7 +79,7 @@ std::vector<HorizontalForce> pondedWaterEndForces(const SlopeSection& section, R
     const Real p = section.pondedPressure(x);
     if (!(p > 0) || !(gamma > 0)) continue;
     const Real depth = p / gamma;
-    forces.push_back({towards * 0.5 * p * depth, section.ground.at(x) + depth / 3});
+    forces.push_back({towards * 0.5 * p * depth, section.ground.at(x) + depth / 3, x});
   }
   return forces;
 }

@@ -9,6 +9,9 @@ namespace argine {
 
 namespace {
 
+/// How the end forces' moment enters sum w Q = 0 (the orientation of Q in interslice()).
+constexpr Real kEndMomentSign = 1;
+
 /// A slice reduced to what the equilibrium equations need, in the frame where the mass
 /// slides towards -x (x and alpha mirrored when it slides towards +x).
 struct SliceTerms {
@@ -24,12 +27,44 @@ struct Frame {
   std::vector<SliceTerms> terms;
   Real sign = 1;     ///< -1: mirrored (the mass slides towards +x)
   Real driving = 0;  ///< sum W sin(alpha) in the mirrored frame (>= 0 when admissible)
+  /// The end forces' moment about their slices' base midpoints, sum (y_H - y_b) H (N m/m,
+  /// frame): what the moment equation adds to sum w Q (see addEndForces).
+  Real end_moment = 0;
 };
 
-Frame toFrame(const std::vector<Slice>& slices) {
+/// Horizontal end forces (water standing against the ends) on the slice at their abscissa:
+/// in its equilibrium along and normal to the base, A -= H cos(alpha) and
+/// N'_free += H sin(alpha) (the force's components down the base and into it, in the frame
+/// sliding towards -x); in the moment equation the difference between its line of action and
+/// the slice's base midpoint, through which Spencer's equations take every slice force.
+void addEndForces(Frame& f, const std::vector<Slice>& slices,
+                  const std::vector<HorizontalForce>& forces) {
+  for (const HorizontalForce& h : forces) {
+    if (slices.empty() || h.force == 0) continue;
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < slices.size(); ++i)
+      if (std::abs(slices[i].x_mid - h.x) < std::abs(slices[k].x_mid - h.x)) k = i;
+    SliceTerms& t = f.terms[k];
+    const Real force = f.sign * h.force;
+    t.driving -= force * std::cos(t.alpha);
+    t.normal_free += force * std::sin(t.alpha);
+    t.resisting += force * std::sin(t.alpha) * t.tan_phi;
+    f.driving -= force * std::cos(t.alpha);
+    f.end_moment += (h.y - t.y) * force;
+  }
+}
+
+Frame toFrame(const std::vector<Slice>& slices, const std::vector<HorizontalForce>& forces = {}) {
   Frame f;
   Real driving = 0;
   for (const Slice& s : slices) driving += s.weight * std::sin(s.base_angle);
+  for (const HorizontalForce& h : forces) {  // their driving part, -H cos(alpha) of their slice
+    if (slices.empty()) break;
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < slices.size(); ++i)
+      if (std::abs(slices[i].x_mid - h.x) < std::abs(slices[k].x_mid - h.x)) k = i;
+    driving -= h.force * std::cos(slices[k].base_angle);
+  }
   f.sign = driving < 0 ? Real(-1) : Real(1);
   for (const Slice& s : slices) {
     const Real alpha = f.sign * s.base_angle;
@@ -41,6 +76,7 @@ Frame toFrame(const std::vector<Slice>& slices) {
                        tan_phi, alpha, f.sign * s.x_mid, s.base_y, normal_free});
     f.driving += s.weight * std::sin(alpha);
   }
+  addEndForces(f, slices, forces);
   return f;
 }
 
@@ -99,19 +135,19 @@ bool illinois(const std::function<Real(Real)>& r, Real a, Real ra, Real b, Real 
 /// turns from negative (strength ahead) to positive (driving ahead), searched from `hint`.
 /// False when no such root lies below 1e3.
 bool solveFactor(const Frame& f, Real theta, const std::vector<Real>& weights, Real hint, Real tol,
-                 int max_iterations, Real& factor) {
+                 int max_iterations, Real& factor, Real constant = 0) {
   const Real pole = poleBound(f, theta);
   if (!std::isfinite(pole)) return false;
   // Orient the residual so that it is positive for large F (sum w A / cos(alpha - theta),
   // the driving part alone): a moment point below the mass flips the sign of every arm.
-  Real at_infinity = 0;
+  Real at_infinity = constant;
   for (std::size_t i = 0; i < f.terms.size(); ++i) {
     at_infinity += weights[i] * f.terms[i].driving / std::cos(f.terms[i].alpha - theta);
   }
   if (!(at_infinity != 0)) return false;
   const Real orient = at_infinity > 0 ? Real(1) : Real(-1);
   const auto residual = [&](Real F) {
-    Real sum = 0;
+    Real sum = constant;
     for (std::size_t i = 0; i < f.terms.size(); ++i) {
       sum += weights[i] * interslice(f.terms[i], F, theta);
     }
@@ -163,12 +199,13 @@ Real minM(const Frame& f, Real factor, Real theta) {
   return m;
 }
 
-FactorOfSafety partialFactor(const Frame& f, Real theta, const std::vector<Real>& weights) {
+FactorOfSafety partialFactor(const Frame& f, Real theta, const std::vector<Real>& weights,
+                             Real constant = 0) {
   FactorOfSafety r;
   r.driving = f.driving;
   if (!(f.driving > 0)) return r;
   Real factor = 0;
-  r.converged = solveFactor(f, theta, weights, 1, 1e-12, 200, factor);
+  r.converged = solveFactor(f, theta, weights, 1, 1e-12, 200, factor, constant);
   r.value = factor;
   if (r.converged) {
     r.min_m_alpha = minM(f, factor, theta);
@@ -201,13 +238,15 @@ FactorOfSafety janbuSimplified(const std::vector<Slice>& slices) {
   return spencerForceFactor(slices, 0);
 }
 
-FactorOfSafety spencerMomentFactor(const std::vector<Slice>& slices, Real theta, Real x0, Real y0) {
-  const Frame f = toFrame(slices);
+FactorOfSafety spencerMomentFactor(const std::vector<Slice>& slices, Real theta, Real x0, Real y0,
+                                   const std::vector<HorizontalForce>& end_forces) {
+  const Frame f = toFrame(slices, end_forces);
   const Real th = f.sign * theta;
-  return partialFactor(f, th, momentWeights(f, th, f.sign * x0, y0));
+  return partialFactor(f, th, momentWeights(f, th, f.sign * x0, y0), kEndMomentSign * f.end_moment);
 }
 
-SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& options) {
+SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& options,
+                      const std::vector<HorizontalForce>& end_forces) {
   SpencerFactor result;
   if (options.use_moment_point) {
     result.moment_x = options.moment_x;
@@ -215,7 +254,7 @@ SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& op
   } else {
     spencerMomentPoint(slices, result.moment_x, result.moment_y);
   }
-  const Frame f = toFrame(slices);
+  const Frame f = toFrame(slices, end_forces);
   result.factor.driving = f.driving;
   if (!(f.driving > 0)) return result;
   const Real x0 = f.sign * result.moment_x, y0 = result.moment_y;
@@ -228,7 +267,7 @@ SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& op
     ++evaluations;
     Real fm = 0, ff = 0;
     ok = solveFactor(f, theta, momentWeights(f, theta, x0, y0), hint, tol, options.max_iterations,
-                     fm) &&
+                     fm, kEndMomentSign * f.end_moment) &&
          solveFactor(f, theta, forceWeights(f), fm, tol, options.max_iterations, ff);
     if (!ok) return Real(0);
     hint = ff;

@@ -150,6 +150,28 @@ TEST(FactorOfSafetyRun, EveryOutputAndTheHandOver) {
   // the slice table: the slices of each of the three evaluations
   const auto slices = readCsvRows((dir / "slope_critical_slices.csv").string());
   EXPECT_GE(slices.size(), 3u * 50u);
+  // Bishop's method: the factor is Bishop's column; the ordinary method is lower (phi' > 0).
+  EXPECT_EQ(rows[0][1], rows[0][2]);
+  EXPECT_LT(rows[0][3], rows[0][2]);
+}
+
+TEST(FactorOfSafetyRun, SpencerOnTheSameState) {
+  // Method spencer on the same deck: Spencer's F of its own critical circle, within 1 % of
+  // Bishop's in a dry homogeneous slope (Bishop's simplified method is known to lie within
+  // a few per cent of the rigorous methods on circles; SpencerCircleTest: 1 %).
+  std::string text = deckText("", true);
+  text.replace(text.find("    Suction Strength: none"), 0,
+               "    Method: spencer\n    Search Starts: 1\n");  // one start: a quicker test
+  const Deck deck = parse(text);
+  ASSERT_TRUE(deck.factor_of_safety.spencer);
+  const Simulation initial(deck, RunOptions{});  // the initial state, not run
+  const CriticalCircle spencer_circle =
+      criticalCircleOf(deck.factor_of_safety, initial.points(), deck.materials, 9.81);
+  ASSERT_TRUE(spencer_circle.found);
+  std::cout << "slope: Spencer F " << spencer_circle.objective.value << ", Bishop on its circle "
+            << spencer_circle.bishop.value << "\n";
+  EXPECT_NEAR(spencer_circle.objective.value, spencer_circle.bishop.value,
+              0.01 * spencer_circle.bishop.value);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "argine/slopestability/CircleSearch.hpp"
 #include "argine/slopestability/PointSection.hpp"
 #include "argine/slopestability/Slicing.hpp"
+#include "argine/slopestability/Spencer.hpp"
 
 namespace argine {
 namespace {
@@ -54,6 +55,46 @@ TEST(PondedWater, SubmergedSlopeAsWithBuoyantWeights) {
       // summed over slices): O(1/N^2).
       EXPECT_NEAR(a.bishop.value, b, (slices == 50 ? 1e-3 : 3e-5) * b);
     }
+  }
+}
+
+TEST(PondedWater, SpencerSubmergedAsWithBuoyantWeights) {
+  // Spencer's method on the Bishop-critical circles of the equivalence above, moments about
+  // the circle's centre: the end thrusts enter the end slices' equilibrium and the moment
+  // equation, and the water must again drop out.
+  for (const Real level : {30.0, 40.0}) {
+    SlopeSection wet = acads::problem1a();
+    wet.phreatic = Polyline({20, 70}, {level, level});
+    SlopeSection buoyant = acads::problem1a();
+    buoyant.layers.push_back({"below the level", Polyline({20, 70}, {level, level}),
+                              acads::kUnitWeight - kGammaW, kCohesion, kFriction});
+    const CriticalCircle c = searchCriticalCircle(wet, acads::problem1aGrid(400));
+    ASSERT_TRUE(c.found);
+    SpencerOptions about_centre;
+    about_centre.use_moment_point = true;
+    about_centre.moment_x = c.circle.centre_x;
+    about_centre.moment_y = c.circle.centre_y;
+    const SlipMass wet_mass = sliceCircle(wet, c.circle, 400);
+    const SlipMass dry_mass = sliceCircle(buoyant, c.circle, 400);
+    const SpencerFactor a = spencer(wet_mass.slices, about_centre, wet_mass.end_forces);
+    const SpencerFactor b = spencer(dry_mass.slices, about_centre);
+    ASSERT_TRUE(a.factor.converged && b.factor.converged);
+    std::cout << "Spencer, water at y = " << level << ": F " << a.factor.value << " (theta "
+              << a.theta << ") with water, " << b.factor.value << " (theta " << b.theta
+              << ") buoyant\n";
+    // Exact: at theta = 0 Spencer's moment equation about the centre is Bishop's simplified
+    // method, and the two take the end thrusts in independently written ways (slice terms
+    // and a moment constant here, a driving moment there).
+    const Real bishop =
+        bishopSimplified(wet_mass.slices, {}, endForceDriving(wet_mass, c.circle)).value;
+    const FactorOfSafety moment0 = spencerMomentFactor(wet_mass.slices, 0, c.circle.centre_x,
+                                                       c.circle.centre_y, wet_mass.end_forces);
+    // (to Bishop's iteration tolerance, 1e-8 of F a step; twice that for the last iterate)
+    EXPECT_NEAR(moment0.value, bishop, 2e-8 * bishop);
+    // Not exact: Spencer's constant inclination applies to the total interslice forces, which
+    // carry the water's thrust, so with and without the water they are different
+    // assumptions; Spencer's F is known to depend little on them.
+    EXPECT_NEAR(a.factor.value, b.factor.value, 0.005 * b.factor.value);
   }
 }
 

@@ -364,6 +364,7 @@ enum class SuctionStrength { SolidModel, Vanapalli, Fredlund, None };
 /// (simulation/FactorOfSafetyMonitor.hpp). Unset ranges follow from the ground.
 struct FactorOfSafetySpec {
   bool enabled = false;
+  bool spencer = false;  ///< `Method: spencer` (else Bishop's simplified method)
   std::optional<std::array<Real, 2>> centre_x, centre_y, tangent_y;  ///< search ranges (m)
   int grid_count = 11;
   int refinements = 3;

@@ -43,6 +43,7 @@ struct Slice {
 struct HorizontalForce {
   Real force = 0;
   Real y = 0;
+  Real x = 0;  ///< the end of the mass it acts on (m): it loads the slice there
 };
 
 /// The sliding mass of a trial surface, or why there is none.

@@ -71,9 +71,13 @@ FactorOfSafety spencerForceFactor(const std::vector<Slice>& slices, Real theta);
 FactorOfSafety janbuSimplified(const std::vector<Slice>& slices);
 
 /// F that satisfies moment equilibrium about (x0, y0) at inclination theta.
-FactorOfSafety spencerMomentFactor(const std::vector<Slice>& slices, Real theta, Real x0, Real y0);
+FactorOfSafety spencerMomentFactor(const std::vector<Slice>& slices, Real theta, Real x0, Real y0,
+                                   const std::vector<HorizontalForce>& end_forces = {});
 
 /// Spencer's factor of safety (see the file comment).
-SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& options = {});
+/// `end_forces`: horizontal forces on the ends of the mass (SlipMass::end_forces, water
+/// standing against them), each on the slice at its abscissa.
+SpencerFactor spencer(const std::vector<Slice>& slices, const SpencerOptions& options = {},
+                      const std::vector<HorizontalForce>& end_forces = {});
 
 }  // namespace argine
