@@ -44,9 +44,12 @@ def main():
 
     slices_path = os.path.join(args.directory, args.name + "_critical_slices.csv")
     has_slices = os.path.exists(slices_path)
-    fig, axes = plt.subplots(1, 2 if has_slices else 1, figsize=(12 if has_slices else 6, 4))
+    fig, axes = plt.subplots(1, 2 if has_slices else 1, figsize=(12 if has_slices else 6, 4.6))
     ax = axes[0] if has_slices else axes
-    ax.plot([t / scale for t in times], factors, "o-", ms=3, label="Bishop (critical circle)")
+    ax.plot([t / scale for t in times], factors, "o-", ms=3, label="F of the critical circle")
+    if "bishop" in history and history["bishop"] != factors:  # Method: spencer
+        ax.plot([t / scale for t in times], history["bishop"], ":", lw=1,
+                label="Bishop, same circle")
     ax.plot([t / scale for t in times], history["ordinary_method"], "--", lw=1,
             label="ordinary method, same circle")
     ax.axhline(1.0, color="k", lw=0.8)
