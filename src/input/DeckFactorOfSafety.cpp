@@ -47,19 +47,10 @@ FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present)
   if (spec.suction == SuctionStrength::Fredlund)
     spec.suction_friction_angle = section.real("Suction Friction Angle (deg)") * kRadiansPerDegree;
   if (section.has("Ground Surface (m)")) {
-    const std::string key = "Ground Surface (m)";
-    const std::vector<double> values = section.reals(key);
-    if (values.size() < 4 || values.size() % 2 != 0)
-      throw InputError(section.pathOf(key),
-                       "expected x, y pairs (an even count of at least 4 numbers), got " +
-                           std::to_string(values.size()) + " numbers");
-    for (std::size_t i = 0; i < values.size(); i += 2) {
-      if (!spec.ground_surface.empty() && !(values[i] > spec.ground_surface.back()[0]))
-        throw InputError(section.pathOf(key), "x must increase from vertex to vertex; vertex " +
-                                                  std::to_string(i / 2 + 1) +
-                                                  " has x = " + formatReal(values[i]));
-      spec.ground_surface.push_back({values[i], values[i + 1]});
-    }
+    spec.ground_surface = vertexPairs(section, "Ground Surface (m)");
+    if (spec.ground_surface.size() < 2)
+      throw InputError(section.pathOf("Ground Surface (m)"),
+                       "expected at least two (x, y) vertices, got one");
   }
   spec.cell_size = section.real("Cell Size (m)");
   spec.slice_table = section.boolean("Slice Table");

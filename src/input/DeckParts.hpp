@@ -15,6 +15,10 @@ StageSpec parseStage(const DeckSection& stage);
 /// `Output` -> OutputSpec.
 OutputSpec parseOutput(const DeckSection& output);
 
+/// The (x, y) pairs of a list key, x strictly increasing; InputError naming the key for an
+/// odd or empty list or a non-increasing x (DeckStageAdditions.cpp).
+std::vector<std::array<Real, 2>> vertexPairs(const DeckSection& section, const std::string& key);
+
 // ---- issue P4 ----
 /// `Initialisation` -> InitialisationSpec (polylines as vertex pairs).
 InitialisationSpec parseInitialisation(const DeckSection& initialisation);

@@ -13,23 +13,6 @@ namespace {
 
 constexpr Real kPi = 3.14159265358979323846;
 
-std::vector<std::array<Real, 2>> vertexPairs(const DeckSection& section, const std::string& key) {
-  const std::vector<double> values = section.reals(key);
-  const std::string where = section.pathOf(key);
-  if (values.empty() || values.size() % 2 != 0)
-    throw InputError(where, "expected x, y pairs (an even, non-zero count of numbers), got " +
-                                std::to_string(values.size()) + " numbers");
-  std::vector<std::array<Real, 2>> vertices;
-  for (std::size_t i = 0; i < values.size(); i += 2) {
-    if (!vertices.empty() && !(values[i] > vertices.back()[0]))
-      throw InputError(where, "x must increase from vertex to vertex; vertex " +
-                                  std::to_string(i / 2 + 1) + " has x = " + formatReal(values[i]) +
-                                  " after x = " + formatReal(vertices.back()[0]));
-    vertices.push_back({values[i], values[i + 1]});
-  }
-  return vertices;
-}
-
 std::array<Real, 2> pairOf(const DeckSection& section, const std::string& key) {
   const std::vector<double> values = section.reals(key);
   return {values[0], values[1]};
@@ -46,6 +29,23 @@ bool isMohrCoulomb(SolidModel model) {
 }
 
 }  // namespace
+
+std::vector<std::array<Real, 2>> vertexPairs(const DeckSection& section, const std::string& key) {
+  const std::vector<double> values = section.reals(key);
+  const std::string where = section.pathOf(key);
+  if (values.empty() || values.size() % 2 != 0)
+    throw InputError(where, "expected x, y pairs (an even, non-zero count of numbers), got " +
+                                std::to_string(values.size()) + " numbers");
+  std::vector<std::array<Real, 2>> vertices;
+  for (std::size_t i = 0; i < values.size(); i += 2) {
+    if (!vertices.empty() && !(values[i] > vertices.back()[0]))
+      throw InputError(where, "x must increase from vertex to vertex; vertex " +
+                                  std::to_string(i / 2 + 1) + " has x = " + formatReal(values[i]) +
+                                  " after x = " + formatReal(vertices.back()[0]));
+    vertices.push_back({values[i], values[i + 1]});
+  }
+  return vertices;
+}
 
 InitialisationSpec parseInitialisation(const DeckSection& initialisation) {
   InitialisationSpec spec;

@@ -75,12 +75,7 @@ SlopeSection sectionForFactorOfSafety(const FactorOfSafetySpec& spec, const Sect
   };
   if (spec.ground_surface.empty())
     return sectionFromPoints(points, strength, spec.cell_size, nullptr, water_unit_weight);
-  std::vector<Real> gx, gy;
-  for (const auto& vertex : spec.ground_surface) {
-    gx.push_back(vertex[0]);
-    gy.push_back(vertex[1]);
-  }
-  const Polyline ground(gx, gy);
+  const Polyline ground(spec.ground_surface, "Factor Of Safety/Ground Surface (m)");
   return sectionFromPoints(points, strength, spec.cell_size, &ground, water_unit_weight);
 }
 

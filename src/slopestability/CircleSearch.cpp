@@ -42,8 +42,7 @@ namespace {
 /// One trial circle of the search: sliced, limited, evaluated; the best so far kept.
 /// Returns the objective's F, or NaN when the circle is rejected.
 Real tryCircle(const SlopeSection& section, const CircleSearchGrid& grid,
-               const CircleObjective& objective, const SlipCircle& circle, Real tangent,
-               CriticalCircle& best, Real& best_tangent) {
+               const CircleObjective& objective, const SlipCircle& circle, CriticalCircle& best) {
   ++best.evaluated;
   SlipMass mass = sliceCircle(section, circle, grid.slice_count, grid.split_at_materials);
   if (!mass.valid || !withinSearchLimits(mass, grid)) {
@@ -60,7 +59,6 @@ Real tryCircle(const SlopeSection& section, const CircleSearchGrid& grid,
     best.circle = circle;
     best.objective = fs;
     best.mass = std::move(mass);
-    best_tangent = tangent;
   }
   return fs.value;
 }
@@ -76,7 +74,6 @@ struct GridIndex {
 CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleSearchGrid& grid,
                                       const CircleObjective& objective) {
   CriticalCircle best;
-  Real best_tangent = 0;
   // First pass: the whole grid, every F kept.
   const GridIndex index{grid.centre_x_count, grid.centre_y_count, grid.tangent_count};
   std::vector<Real> factors(static_cast<std::size_t>(index.nx * index.ny * index.nt));
@@ -86,8 +83,8 @@ CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleS
         const Real xc = gridValue(grid.centre_x_min, grid.centre_x_max, index.nx, ix);
         const Real yc = gridValue(grid.centre_y_min, grid.centre_y_max, index.ny, iy);
         const Real yt = gridValue(grid.tangent_y_min, grid.tangent_y_max, index.nt, it);
-        factors[static_cast<std::size_t>(index.flat(ix, iy, it))] = tryCircle(
-            section, grid, objective, SlipCircle{xc, yc, yc - yt}, yt, best, best_tangent);
+        factors[static_cast<std::size_t>(index.flat(ix, iy, it))] =
+            tryCircle(section, grid, objective, SlipCircle{xc, yc, yc - yt}, best);
       }
   if (!best.found) return best;
 
@@ -140,8 +137,7 @@ CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleS
             const Real xc = gridValue(px - sx, px + sx, index.nx, jx);
             const Real yc = gridValue(py - sy, py + sy, index.ny, jy);
             const Real yt = gridValue(pt - st, pt + st, index.nt, jt);
-            const Real f = tryCircle(section, grid, objective, SlipCircle{xc, yc, yc - yt}, yt,
-                                     best, best_tangent);
+            const Real f = tryCircle(section, grid, objective, SlipCircle{xc, yc, yc - yt}, best);
             if (std::isfinite(f) && f < local_f) {
               local_f = f;
               cx = xc;
@@ -154,7 +150,6 @@ CriticalCircle searchCriticalCircleBy(const SlopeSection& section, const CircleS
       st = gridStep(pt - st, pt + st, index.nt);
     }
   }
-  (void)best_tangent;
   const Real external = endForceDriving(best.mass, best.circle);
   best.bishop = bishopSimplified(best.mass.slices, {}, external);
   best.ordinary = ordinaryMethodOfSlices(best.mass.slices, external);

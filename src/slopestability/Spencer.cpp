@@ -32,6 +32,14 @@ struct Frame {
   Real end_moment = 0;
 };
 
+/// The slice whose base midpoint lies nearest to x (slices not empty).
+std::size_t sliceNearest(const std::vector<Slice>& slices, Real x) {
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < slices.size(); ++i)
+    if (std::abs(slices[i].x_mid - x) < std::abs(slices[k].x_mid - x)) k = i;
+  return k;
+}
+
 /// Horizontal end forces (water standing against the ends) on the slice at their abscissa:
 /// in its equilibrium along and normal to the base, A -= H cos(alpha) and
 /// N'_free += H sin(alpha) (the force's components down the base and into it, in the frame
@@ -41,10 +49,7 @@ void addEndForces(Frame& f, const std::vector<Slice>& slices,
                   const std::vector<HorizontalForce>& forces) {
   for (const HorizontalForce& h : forces) {
     if (slices.empty() || h.force == 0) continue;
-    std::size_t k = 0;
-    for (std::size_t i = 1; i < slices.size(); ++i)
-      if (std::abs(slices[i].x_mid - h.x) < std::abs(slices[k].x_mid - h.x)) k = i;
-    SliceTerms& t = f.terms[k];
+    SliceTerms& t = f.terms[sliceNearest(slices, h.x)];
     const Real force = f.sign * h.force;
     t.driving -= force * std::cos(t.alpha);
     t.normal_free += force * std::sin(t.alpha);
@@ -60,10 +65,7 @@ Frame toFrame(const std::vector<Slice>& slices, const std::vector<HorizontalForc
   for (const Slice& s : slices) driving += s.weight * std::sin(s.base_angle);
   for (const HorizontalForce& h : forces) {  // their driving part, -H cos(alpha) of their slice
     if (slices.empty()) break;
-    std::size_t k = 0;
-    for (std::size_t i = 1; i < slices.size(); ++i)
-      if (std::abs(slices[i].x_mid - h.x) < std::abs(slices[k].x_mid - h.x)) k = i;
-    driving -= h.force * std::cos(slices[k].base_angle);
+    driving -= h.force * std::cos(slices[sliceNearest(slices, h.x)].base_angle);
   }
   f.sign = driving < 0 ? Real(-1) : Real(1);
   for (const Slice& s : slices) {

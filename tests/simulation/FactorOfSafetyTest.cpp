@@ -98,6 +98,16 @@ TEST(FactorOfSafetyDeck, HandOverNeedsTheSectionAndRangesMustIncrease) {
     EXPECT_NE(std::string(e.what()).find("Factor Of Safety/Centre X (m)"), std::string::npos)
         << e.what();
   }
+  std::string one_vertex = deckText("", true);
+  one_vertex.replace(one_vertex.find("    Suction Strength: none"), 0,
+                     "    Ground Surface (m): [0.0, 5.0]\n");
+  try {
+    parse(one_vertex);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Factor Of Safety/Ground Surface (m)"), std::string::npos)
+        << e.what();
+  }
   const Deck deck = parse(deckText(key, true));
   EXPECT_TRUE(deck.factor_of_safety.enabled);
   EXPECT_EQ(deck.factor_of_safety.suction, SuctionStrength::None);
