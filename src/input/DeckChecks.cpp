@@ -127,8 +127,9 @@ void checkDeck(const Deck& deck) {
                            "), got " + degrees(solid.dilatancy_angle));
   }
 
-  input_detail::checkStageAdditions(deck);  // issue P4
-  input_detail::checkFactorOfSafety(deck);  // issue P13
+  input_detail::checkStageAdditions(deck);     // issue P4
+  input_detail::checkFactorOfSafety(deck);     // issue P13
+  input_detail::checkStrengthReduction(deck);  // issue P13
 
   if (deck.output.name.find('/') != std::string::npos)
     throw InputError("Output/Name", "must be a file stem without '/', got '" + deck.output.name +

@@ -604,6 +604,41 @@ ListSchema relaxationKeys() {
   return relaxation;
 }
 
+ListSchema strengthReductionKeys() {
+  ListSchema srm;
+  srm.add(KeySpec::real("Initial Factor", "-", "F of the first trial").above(0).byDefault(1.0));
+  srm.add(KeySpec::real("Factor Step", "-",
+                        "first change of F while no trial has failed (or none has held), "
+                        "doubled after each trial in the same direction")
+              .above(0)
+              .byDefault(0.2));
+  srm.add(KeySpec::real("Factor Tolerance", "-",
+                        "the search bisects until the lowest failing and the highest holding F "
+                        "are at most twice this apart; the result is their mean, +- this")
+              .above(0)
+              .byDefault(0.01));
+  srm.add(KeySpec::real("Minimum Factor", "-", "the search ends when a trial at this F fails")
+              .above(0)
+              .byDefault(0.1));
+  srm.add(KeySpec::real("Maximum Factor", "-", "the search ends when a trial at this F holds")
+              .above(0)
+              .byDefault(5.0));
+  srm.add(KeySpec::choice("Failure Criterion", deckWords(kStrengthReductionCriterionWords),
+                          "what makes a trial fail: non-convergence = not relaxed (stage "
+                          "Relaxation) within Duration (s); accelerating displacement = the "
+                          "mobilised mass (points that moved at least half the most) moves "
+                          "faster in the trial's second half than in its first, and at least "
+                          "Minimum Displacement (m); either = either of them. The CSV reports "
+                          "both for every trial")
+              .byDefault(std::string("either")));
+  srm.add(KeySpec::real("Minimum Displacement (m)", "m",
+                        "mean displacement of the mobilised mass below which a trial does not "
+                        "fail by accelerating displacement")
+              .above(0)
+              .byDefault(1e-3));
+  return srm;
+}
+
 ListSchema materialChangeKeys() {
   ListSchema change;
   change.add(
@@ -704,6 +739,15 @@ ListSchema stageKeys() {
                           "section Factor Of Safety) is below this, e.g. 1.0: the next stage "
                           "(e.g. explicit MPM) starts from that state")
                 .above(0));
+  stage.add(KeySpec::sublist("Strength Reduction", strengthReductionKeys(),
+                             "make the stage a strength-reduction analysis (P13): trials from "
+                             "the state the stage finds, each with c, tan phi (and the suction "
+                             "terms) and the cut-off of the Mohr-Coulomb materials divided by F "
+                             "and at most Duration (s) of the stage's quasi-static steps; needs "
+                             "Relaxation; writes <Name>_strength_reduction.csv and "
+                             "<Name>_strength_reduction_points.csv and leaves the state as it "
+                             "found it")
+                .when("Solver", {"quasi-static"}));
   stage.add(KeySpec::namedSublists("Material Changes", "material", materialChangeKeys(),
                                    "new parameters of materials (entry name = material name), "
                                    "applied when the stage starts"));

@@ -427,6 +427,7 @@ StageSpec parseStage(const DeckSection& stage) {
     spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
   parseStageAdditions(stage, spec);          // issue P4
   parseFactorOfSafetyHandOver(stage, spec);  // issue P13
+  parseStrengthReduction(stage, spec);       // issue P13
   return spec;
 }
 

@@ -40,6 +40,10 @@ FactorOfSafetySpec parseFactorOfSafety(const DeckSection& section, bool present)
 void parseFactorOfSafetyHandOver(const DeckSection& stage_section, StageSpec& stage);
 /// The hand-over needs the `Factor Of Safety` section.
 void checkFactorOfSafety(const Deck& deck);
+/// A stage's `Strength Reduction` into `stage` (DeckStrengthReduction.cpp).
+void parseStrengthReduction(const DeckSection& stage_section, StageSpec& stage);
+/// A strength-reduction stage's needs (Relaxation, a Mohr-Coulomb material) and exclusions.
+void checkStrengthReduction(const Deck& deck);
 
 /// Throws when two materials name the same block.
 void checkOneMaterialPerBlock(const Deck& deck);

@@ -182,6 +182,7 @@ RunSummary Simulation::run() {
 
 void Simulation::runStage(const StageSpec& stage) {
   if (stage.solver == SolverKind::ImplicitSeepage) return runImplicitSeepageStage(stage);
+  if (stage.strength_reduction.enabled) return runStrengthReductionStage(stage);  // (P13)
   const bool resumed = resume_pending_;  // (P8) restart inside this stage: its start is done
   if (!resumed) {
     applyStageMaterialChanges(stage);  // (P4) before beginStage: its energy scale sees them

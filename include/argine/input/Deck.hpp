@@ -243,6 +243,30 @@ struct MaterialChangeSpec {
 
 // ---- end of issue P4 stage additions ----
 
+/// What makes a strength-reduction trial fail (P13 item 3; simulation/StrengthReductionTrial).
+enum class StrengthReductionCriterion {
+  NonConvergence,            ///< the quasi-static solution does not relax within the trial
+  AcceleratingDisplacement,  ///< the mobilised mass moves faster in the trial's second half
+  Either,                    ///< either of the two
+};
+
+/// A stage's `Strength Reduction` (P13 item 3): the stage becomes a strength-reduction
+/// analysis. Each trial starts from the state the stage found, divides c, tan phi (with the
+/// suction terms) and the cut-off of every Mohr-Coulomb material by a factor F and runs the
+/// stage's quasi-static steps for at most its Duration (s); the factors bracket, then bisect,
+/// the smallest failing F (simulation/StrengthReductionSearch.hpp). The stage leaves the
+/// state and the materials as it found them.
+struct StrengthReductionSpec {
+  bool enabled = false;
+  Real initial_factor = 1;    ///< the first trial's F (-)
+  Real factor_step = 0.2;     ///< first step of F while bracketing, doubled each time (-)
+  Real tolerance = 0.01;      ///< bisection until (F_fail - F_stable)/2 <= this (-)
+  Real minimum_factor = 0.1;  ///< below this the search stops: fails at the minimum (-)
+  Real maximum_factor = 5;    ///< above this the search stops: stable at the maximum (-)
+  StrengthReductionCriterion criterion = StrengthReductionCriterion::Either;
+  Real minimum_displacement = 1e-3;  ///< (m) the mobilised mass must move this much to fail
+};
+
 struct StageSpec {
   std::string name;
   SolverKind solver = SolverKind::Explicit;
@@ -265,6 +289,7 @@ struct StageSpec {
   std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
   /// (P13) end the stage at the first output whose factor of safety is below this; 0: never
   Real hand_over_below_factor_of_safety = 0;
+  StrengthReductionSpec strength_reduction;  ///< (P13) enabled: a strength-reduction analysis
 };
 
 // ---------------------------------------------------------------- initialisation (P4)

@@ -64,6 +64,12 @@ inline constexpr DeckWord<SolverKind> kSolverWords[] = {
     {"implicit seepage", SolverKind::ImplicitSeepage},
 };
 
+inline constexpr DeckWord<StrengthReductionCriterion> kStrengthReductionCriterionWords[] = {
+    {"non-convergence", StrengthReductionCriterion::NonConvergence},
+    {"accelerating displacement", StrengthReductionCriterion::AcceleratingDisplacement},
+    {"either", StrengthReductionCriterion::Either},
+};
+
 inline constexpr DeckWord<ShapeFamily> kShapeFamilyWords[] = {
     {"linear", ShapeFamily::Linear},
     {"GIMP", ShapeFamily::Gimp},

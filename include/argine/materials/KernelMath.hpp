@@ -46,6 +46,12 @@ KOKKOS_INLINE_FUNCTION Real cos(Real x) {
 KOKKOS_INLINE_FUNCTION Real fabs(Real x) {
   return Kokkos::Experimental::fabs(x);
 }
+KOKKOS_INLINE_FUNCTION Real tan(Real x) {
+  return Kokkos::Experimental::tan(x);
+}
+KOKKOS_INLINE_FUNCTION Real atan(Real x) {
+  return Kokkos::Experimental::atan(x);
+}
 /// sqrt and |x| of each of kLanes points (Lanes.hpp): the IEEE square root, as above. Written per
 /// lane: the compiler turns each loop into one vector instruction where errno is off (the library
 /// rooms, cmake/ArgineRooms.cmake).

@@ -32,6 +32,9 @@ struct SolidSpec {
   Real cohesion_suction_rate = 0;        ///< B (-)
   Real friction_suction_rate = 0;        ///< A (rad)
   Real atmospheric_pressure = 101325.0;  ///< p_atm (Pa)
+  /// F of a strength-reduction trial (P13; simulation/StrengthReductionSearch.hpp): c(s),
+  /// tan phi(s) and the cut-off divided by it (mohrCoulombStrength). 1: the material as given.
+  Real strength_reduction = 1;
 };
 
 /// Volumetric-locking / cell-crossing mitigation of a material.

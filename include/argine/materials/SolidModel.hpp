@@ -58,8 +58,25 @@ KOKKOS_INLINE_FUNCTION Real suctionDependentFriction(const SolidSpec& spec, Real
   return spec.friction_angle + spec.friction_suction_rate * suction / spec.atmospheric_pressure;
 }
 
+/// The strength `strength` divided by the strength-reduction factor F (Dawson, Roth and
+/// Drescher 1999; Griffiths and Lane 1999): c/F, tan phi_F = tan phi / F, the cut-off
+/// sigma_t/F, and psi_F = min(psi, phi_F) so that the flow never dilates more than the
+/// reduced friction allows. Applied to c(s) and phi(s), it reduces the suction terms with
+/// them: the Bishop stress's S_L s adds S_L s tan phi_F to the shear strength. F = 1 returns
+/// `strength` unchanged, to the bit.
+KOKKOS_INLINE_FUNCTION MohrCoulombStrength reducedStrength(MohrCoulombStrength strength, Real f) {
+  if (f == 1) return strength;
+  strength.cohesion /= f;
+  strength.friction_angle = kmath::atan(kmath::tan(strength.friction_angle) / f);
+  if (strength.dilatancy_angle > strength.friction_angle)
+    strength.dilatancy_angle = strength.friction_angle;
+  strength.tensile_strength /= f;
+  return strength;
+}
+
 /// The Mohr-Coulomb strength of `spec` at suction s (Pa): c', phi' for MohrCoulomb, c(s) and
-/// phi(s) of Eqs. 4.23-4.26 for SuctionMohrCoulomb; psi and the cut-off as given.
+/// phi(s) of Eqs. 4.23-4.26 for SuctionMohrCoulomb; psi and the cut-off as given; all of it
+/// reduced by spec.strength_reduction (reducedStrength).
 KOKKOS_INLINE_FUNCTION MohrCoulombStrength mohrCoulombStrength(const SolidSpec& spec,
                                                                Real suction) {
   MohrCoulombStrength strength;
@@ -70,7 +87,7 @@ KOKKOS_INLINE_FUNCTION MohrCoulombStrength mohrCoulombStrength(const SolidSpec& 
   strength.dilatancy_angle = spec.dilatancy_angle;
   strength.tensile_strength = spec.tensile_strength;
   strength.tension_cutoff = spec.tension_cutoff;
-  return strength;
+  return reducedStrength(strength, spec.strength_reduction);
 }
 
 /// What a material's stress update derives from its SolidSpec alone, derived once per
