@@ -2,11 +2,12 @@
 """A strength-reduction stage (doc/theory.md Sec. 11): the trials' displacement against F from
 <Name>_strength_reduction.csv, and the failure mechanism (deviatoric strain increment) of the
 lowest failing trial beside the highest holding one from <Name>_strength_reduction_points.csv;
-with the critical circle of the limit-equilibrium search drawn over it when
-<Name>_factor_of_safety.csv is there (its first row: the state the stage starts from, unless
---time picks another).
+with the critical circle of the limit-equilibrium search on the same state drawn over it when
+<Name>_factor_of_safety.csv is there.
 
-    scripts/plot_strength_reduction.py RESULTS_DIR NAME [--out FILE.png] [--time T]
+    scripts/plot_strength_reduction.py RESULTS_DIR NAME [--time T] [--out FILE.png]
+
+--time: the start time (s) of the strength-reduction stage to draw (default: the last one).
 """
 import argparse
 import csv
@@ -29,20 +30,23 @@ def main():
     parser.add_argument("directory")
     parser.add_argument("name")
     parser.add_argument("--out")
-    parser.add_argument("--time", type=float, help="time of the limit-equilibrium row to draw")
+    parser.add_argument("--time", type=float, help="start time of the stage to draw (s)")
     args = parser.parse_args()
     stem = os.path.join(args.directory, args.name)
     trials = read_rows(stem + "_strength_reduction.csv")
     if not trials:
         raise SystemExit(f"{args.name}_strength_reduction.csv has no rows")
-    points = read_rows(stem + "_strength_reduction_points.csv")
+    times = sorted({r["time"] for r in trials})
+    chosen = times[-1] if args.time is None else min(times, key=lambda t: abs(t - args.time))
+    trials = [r for r in trials if r["time"] == chosen]
+    points = [p for p in read_rows(stem + "_strength_reduction_points.csv")
+              if p["time"] == chosen]
     circle = None
     if os.path.exists(stem + "_factor_of_safety.csv"):
         rows = [r for r in read_rows(stem + "_factor_of_safety.csv")
-                if not math.isnan(r["factor_of_safety"])]
+                if not math.isnan(r["factor_of_safety"]) and abs(r["time"] - chosen) < 1e-9]
         if rows:
-            circle = rows[-1] if args.time is None else min(
-                rows, key=lambda r: abs(r["time"] - args.time))
+            circle = rows[-1]
 
     fig, axes = plt.subplots(1, 3, figsize=(16, 4.6), gridspec_kw={"width_ratios": [1, 1.4, 1.4]})
     ax = axes[0]
@@ -56,7 +60,7 @@ def main():
     ax.set_ylabel("mean displacement of the mobilised mass (m)")
     ax.grid(alpha=0.3, which="both")
     ax.legend()
-    ax.set_title("trials")
+    ax.set_title(f"trials from t = {chosen:.4g} s")
     for ax, failed in ((axes[1], 0), (axes[2], 1)):
         sel = [p for p in points if p["failed"] == failed]
         if not sel:

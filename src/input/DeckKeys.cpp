@@ -624,13 +624,13 @@ ListSchema strengthReductionKeys() {
               .above(0)
               .byDefault(5.0));
   srm.add(KeySpec::choice("Failure Criterion", deckWords(kStrengthReductionCriterionWords),
-                          "what makes a trial fail: non-convergence = not relaxed (stage "
-                          "Relaxation) within Duration (s); accelerating displacement = the "
-                          "mobilised mass (points that moved at least half the most) moves "
-                          "faster in the trial's second half than in its first, and at least "
-                          "Minimum Displacement (m); either = either of them. The CSV reports "
-                          "both for every trial")
-              .byDefault(std::string("either")));
+                          "what makes a trial fail: non-convergence = not at rest (stage "
+                          "Relaxation) at the end of its Duration (s); accelerating "
+                          "displacement = the mobilised mass (points that moved at least half "
+                          "the most) moves faster in the trial's last quarter than in its "
+                          "third, and at least Minimum Displacement (m) in all; either = "
+                          "either of them. The CSV reports both for every trial")
+              .byDefault(std::string("non-convergence")));
   srm.add(KeySpec::real("Minimum Displacement (m)", "m",
                         "mean displacement of the mobilised mass below which a trial does not "
                         "fail by accelerating displacement")
@@ -743,7 +743,7 @@ ListSchema stageKeys() {
                              "make the stage a strength-reduction analysis (P13): trials from "
                              "the state the stage finds, each with c, tan phi (and the suction "
                              "terms) and the cut-off of the Mohr-Coulomb materials divided by F "
-                             "and at most Duration (s) of the stage's quasi-static steps; needs "
+                             "and Duration (s) of the stage's quasi-static steps; needs "
                              "Relaxation; writes <Name>_strength_reduction.csv and "
                              "<Name>_strength_reduction_points.csv and leaves the state as it "
                              "found it")

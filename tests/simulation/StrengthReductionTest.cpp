@@ -203,7 +203,8 @@ TEST(StrengthReductionDeck, NeedsRelaxationAndAFrictionalMaterial) {
   const Deck deck = parse(slopeDeck(srm, true));
   ASSERT_TRUE(deck.stages[1].strength_reduction.enabled);
   EXPECT_EQ(deck.stages[1].strength_reduction.tolerance, 0.01);
-  EXPECT_EQ(deck.stages[1].strength_reduction.criterion, StrengthReductionCriterion::Either);
+  EXPECT_EQ(deck.stages[1].strength_reduction.criterion,
+            StrengthReductionCriterion::NonConvergence);
   EXPECT_FALSE(deck.stages[0].strength_reduction.enabled);
 
   std::string no_relaxation = slopeDeck(srm, true);
@@ -239,10 +240,11 @@ TEST(StrengthReductionRun, BracketsTheFactorFollowsTheCircleAndRestoresTheState)
   ASSERT_GE(trials.size(), 3u);
   Real holding = 0, failing = 1e30;
   for (const auto& t : trials) {
-    if (t[4] > 0.5)
-      failing = std::min(failing, t[1]);
+    EXPECT_EQ(t[0], trials[0][0]);  // one stage: one start time
+    if (t[5] > 0.5)
+      failing = std::min(failing, t[2]);
     else
-      holding = std::max(holding, t[1]);
+      holding = std::max(holding, t[2]);
   }
   ASSERT_LT(failing, 1e30);
   ASSERT_GT(holding, 0);
@@ -261,8 +263,8 @@ TEST(StrengthReductionRun, BracketsTheFactorFollowsTheCircleAndRestoresTheState)
   const auto map = readCsvRows((dir / "slope_strength_reduction_points.csv").string());
   std::vector<std::pair<Real, Real>> strain_distance;
   for (const auto& p : map)
-    if (p[1] > 0.5)
-      strain_distance.emplace_back(p[6], std::fabs(std::hypot(p[3] - xc, p[4] - yc) - radius));
+    if (p[2] > 0.5)
+      strain_distance.emplace_back(p[7], std::fabs(std::hypot(p[4] - xc, p[5] - yc) - radius));
   ASSERT_GT(strain_distance.size(), 100u);
   std::sort(strain_distance.rbegin(), strain_distance.rend());
   const std::size_t top = strain_distance.size() / 20;

@@ -253,8 +253,8 @@ enum class StrengthReductionCriterion {
 /// A stage's `Strength Reduction` (P13 item 3): the stage becomes a strength-reduction
 /// analysis. Each trial starts from the state the stage found, divides c, tan phi (with the
 /// suction terms) and the cut-off of every Mohr-Coulomb material by a factor F and runs the
-/// stage's quasi-static steps for at most its Duration (s); the factors bracket, then bisect,
-/// the smallest failing F (simulation/StrengthReductionSearch.hpp). The stage leaves the
+/// stage's quasi-static steps for its Duration (s), judged at the end; the factors bracket, then
+/// bisect, the smallest failing F (simulation/StrengthReductionSearch.hpp). The stage leaves the
 /// state and the materials as it found them.
 struct StrengthReductionSpec {
   bool enabled = false;
@@ -263,7 +263,7 @@ struct StrengthReductionSpec {
   Real tolerance = 0.01;      ///< bisection until (F_fail - F_stable)/2 <= this (-)
   Real minimum_factor = 0.1;  ///< below this the search stops: fails at the minimum (-)
   Real maximum_factor = 5;    ///< above this the search stops: stable at the maximum (-)
-  StrengthReductionCriterion criterion = StrengthReductionCriterion::Either;
+  StrengthReductionCriterion criterion = StrengthReductionCriterion::NonConvergence;
   Real minimum_displacement = 1e-3;  ///< (m) the mobilised mass must move this much to fail
 };
 

@@ -151,6 +151,8 @@ class Simulation {
   void logLowestFactorOfSafety(const StageSpec& stage);
   /// (P13 item 3; SimulationStrengthReduction.cpp) a stage with `Strength Reduction`
   void runStrengthReductionStage(const StageSpec& stage);
+  std::unique_ptr<CsvWriter> strength_reduction_trials_;     ///< rank 0, from the first such stage
+  std::unique_ptr<CsvWriter> strength_reduction_points_;     ///< its mechanisms
   std::unique_ptr<FactorOfSafetyMonitor> factor_of_safety_;  ///< rank 0, when enabled
   Real last_factor_of_safety_ = 0;                           ///< NaN: none admissible
   Real stage_lowest_factor_ = 0;                             ///< this stage's lowest (0: none yet)
