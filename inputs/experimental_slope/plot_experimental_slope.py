@@ -7,10 +7,12 @@ Reads, where present (DIR defaults to the repository's results/):
   DIR/experimental_slope_rise/                 the deck experimental_slope_rise.yaml
   DIR/experimental_slope_rise_slow/            experimental_slope_rise_slow.yaml
   DIR/experimental_slope_variants/<name>/      the runs of run_variants.sh
+  DIR/experimental_slope_drawdown/             experimental_slope_drawdown.yaml (explicit)
 Each run's water level comes from the Total Head Table of its own deck (the variants' decks
 are in DIR/experimental_slope_variants/). Writes next to this script:
   experimental_slope_factor_of_safety.png  F against time and against the water level
   experimental_slope_critical_circle.png   p_L of the points and the critical circle
+  experimental_slope_drawdown.png          the drawdown: probes and the final deposit
 and prints, per run, F at the end of every water level's hold and the first level at which
 F < 1.
 """
@@ -238,6 +240,62 @@ def plot_circles(runs, path):
     print(f"wrote {path}")
 
 
+def plot_drawdown(results, path):
+    """Probe displacements against time and the points at the end of the drawdown, coloured
+    by their displacement; prints the run-out numbers."""
+    directory = os.path.join(results, "experimental_slope_drawdown")
+    name = "experimental_slope_drawdown"
+    if not os.path.exists(os.path.join(directory, name + "_points.e")):
+        return
+    from scipy.io import netcdf_file
+    with netcdf_file(os.path.join(directory, name + "_points.e"), "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        var = {n: k + 1 for k, n in enumerate(names)}
+        times = f.variables["time_whole"][:].copy()
+        x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
+        get = lambda n, k: f.variables["vals_nod_var%d" % var[n]][k].copy()  # noqa: E731
+        ux, uy = get("displ_x", -1), get("displ_y", -1)
+        ux0, uy0 = get("displ_x", 0), get("displ_y", 0)
+    u = np.hypot(ux, uy)
+    x, y = x0 + ux, y0 + uy
+    k = int(np.argmax(u))
+    print(f"\ndrawdown ({name}), t = {times[-1]:.1f} s: largest |u| {u[k]:.2f} m, point "
+          f"from ({x0[k]:.2f}, {y0[k]:.2f}) to ({x[k]:.2f}, {y[k]:.2f})")
+    print(f"  toe: the farthest point at y < 0.5 m is at x = {x[y < 0.5].max():.2f} m "
+          f"(initial toe 11.0 m)")
+    crest = (x0 < 5.0) & (y0 > 5.5)
+    print(f"  crest (x0 < 5 m, y0 > 5.5 m): largest settlement {-uy[crest].min():.2f} m, "
+          f"at x0 = {x0[crest][np.argmin(uy[crest])]:.2f} m")
+    moved = u > 0.1
+    print(f"  points that moved more than 0.1 m: {moved.sum()} of {len(u)}; they started "
+          f"at x >= {x0[moved].min():.2f} m" if moved.any() else "  no point moved 0.1 m")
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12.5, 4.2), width_ratios=[1, 1.6])
+    for probe, colour in (("crest_edge", "C0"), ("mid_slope", "C1"), ("toe", "C2")):
+        pr = read_csv(os.path.join(directory, f"{name}_probe_{probe}.csv"))
+        if pr:
+            ax1.plot(pr["time"], np.hypot(pr["displacement_x"], pr["displacement_y"]),
+                     color=colour, label=probe)
+    ax1.axvspan(2.0, 3.0, color="0.85", label="level 6 -> 3 m")
+    ax1.set_xlabel("time (s): settle 0-2 s, drawdown from 2 s")
+    ax1.set_ylabel("|u| (m)")
+    ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=8)
+    image = ax2.scatter(x, y, c=u, s=3.0, lw=0, cmap="viridis", rasterized=True)
+    ax2.plot(*zip(*SURFACE), "k--", lw=0.8)
+    ax2.plot([0, 15], [3, 3], color="C0", lw=0.8, ls=":")
+    ax2.set_aspect("equal")
+    ax2.set_xlim(0, 15)
+    ax2.set_ylim(0, 6.5)
+    ax2.set_title(f"t = {times[-1]:.0f} s; dashed: initial surface; dotted: level 3 m",
+                  fontsize=9)
+    fig.colorbar(image, ax=ax2, label="|u| (m)", shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "results"))
@@ -249,6 +307,7 @@ def main():
         report(r)
     plot_factor(runs, os.path.join(HERE, "experimental_slope_factor_of_safety.png"))
     plot_circles(runs, os.path.join(HERE, "experimental_slope_critical_circle.png"))
+    plot_drawdown(args.results, os.path.join(HERE, "experimental_slope_drawdown.png"))
 
 
 if __name__ == "__main__":
