@@ -1,0 +1,314 @@
+#!/usr/bin/python3
+"""Figures and the F-versus-water-level table of inputs/experimental_slope/README.md.
+
+  /usr/bin/python3 inputs/experimental_slope/plot_experimental_slope.py [--results DIR]
+
+Reads, where present (DIR defaults to the repository's results/):
+  DIR/experimental_slope_rise/                 the deck experimental_slope_rise.yaml
+  DIR/experimental_slope_rise_slow/            experimental_slope_rise_slow.yaml
+  DIR/experimental_slope_variants/<name>/      the runs of run_variants.sh
+  DIR/experimental_slope_drawdown/             experimental_slope_drawdown.yaml (explicit)
+Each run's water level comes from the Total Head Table of its own deck (the variants' decks
+are in DIR/experimental_slope_variants/). Writes next to this script:
+  experimental_slope_factor_of_safety.png  F against time and against the water level
+  experimental_slope_critical_circle.png   p_L of the points and the critical circle
+  experimental_slope_drawdown.png          the drawdown: probes and the final deposit
+and prints, per run, F at the end of every water level's hold and the first level at which
+F < 1.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+
+import numpy as np
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+SURFACE = [(0.0, 6.0), (5.0, 6.0), (11.0, 0.0), (15.0, 0.0)]
+THESIS_LEM_LEVEL = 5.8            # thesis: first FS < 1 of its LEM (Fredlund / Vanapalli)
+EXPERIMENT_ONSET = (5.0, 6.0)     # thesis: the experiment's failure onset
+
+# (label, results sub-directory, run name, deck, style)
+RUNS = [
+    ("MC_2, k 5.3e-6 (deck)", "experimental_slope_rise", "experimental_slope_rise",
+     os.path.join(HERE, "experimental_slope_rise.yaml"), dict(color="C0", lw=2)),
+    ("MC_1, k 5.3e-6", "experimental_slope_variants/experimental_slope_rise_mc1",
+     "experimental_slope_rise_mc1", None, dict(color="C0", ls="--")),
+    ("MC_2, k 5.3e-5 (thesis' k)", "experimental_slope_variants/experimental_slope_rise_k10",
+     "experimental_slope_rise_k10", None, dict(color="C1", lw=2)),
+    ("MC_1, k 5.3e-5", "experimental_slope_variants/experimental_slope_rise_k10_mc1",
+     "experimental_slope_rise_k10_mc1", None, dict(color="C1", ls="--")),
+    ("MC, Eq. 4.25 with p_atm, k 5.3e-6", "experimental_slope_variants/experimental_slope_rise_patm",
+     "experimental_slope_rise_patm", None, dict(color="C4", ls="-")),
+    ("MC, Eq. 4.25 with p_atm, k 5.3e-5",
+     "experimental_slope_variants/experimental_slope_rise_k10_patm",
+     "experimental_slope_rise_k10_patm", None, dict(color="C4", ls="--")),
+    ("Fredlund 20 deg, k 5.3e-6", "experimental_slope_variants/experimental_slope_rise_fredlund",
+     "experimental_slope_rise_fredlund", None, dict(color="C2", ls="-")),
+    ("Fredlund 20 deg, k 5.3e-5",
+     "experimental_slope_variants/experimental_slope_rise_k10_fredlund",
+     "experimental_slope_rise_k10_fredlund", None, dict(color="C2", ls="--")),
+    ("Vanapalli, k 5.3e-6", "experimental_slope_variants/experimental_slope_rise_vanapalli",
+     "experimental_slope_rise_vanapalli", None, dict(color="C3", ls="-")),
+    ("Vanapalli, k 5.3e-5", "experimental_slope_variants/experimental_slope_rise_k10_vanapalli",
+     "experimental_slope_rise_k10_vanapalli", None, dict(color="C3", ls="--")),
+    ("MC_2, k 5.3e-6, levels held 1 day", "experimental_slope_rise_slow",
+     "experimental_slope_rise_slow", os.path.join(HERE, "experimental_slope_rise_slow.yaml"),
+     dict(color="k", lw=2)),
+]
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else {}
+
+
+def level_table(deck):
+    """(times, levels) of the first Total Head Table in the deck."""
+    with open(deck) as f:
+        text = f.read()
+    m = re.search(r"Total Head Table:\s*\[([^\]]*)\]", text)
+    values = [float(v) for v in m.group(1).split(",")]
+    return np.array(values[0::2]), np.array(values[1::2])
+
+
+def holds(times, levels):
+    """[(level, end of its hold)] of the table's plateaus, the initial level first."""
+    out = [(levels[0], times[0])]
+    for k in range(1, len(times)):
+        if levels[k] == levels[k - 1] and times[k] > times[k - 1]:
+            out.append((levels[k], times[k]))
+    return out
+
+
+def load(results):
+    runs = []
+    for label, sub, name, deck, style in RUNS:
+        directory = os.path.join(results, sub)
+        path = os.path.join(directory, name + "_factor_of_safety.csv")
+        if deck is None:
+            deck = os.path.join(results, "experimental_slope_variants", name + ".yaml")
+        if not (os.path.exists(path) and os.path.exists(deck)):
+            continue
+        fs = read_csv(path)
+        tt, hh = level_table(deck)
+        runs.append(dict(label=label, name=name, dir=directory, fs=fs, style=style,
+                         table=(tt, hh), level=np.interp(fs["time"], tt, hh)))
+    return runs
+
+
+def report(run):
+    fs, (tt, hh) = run["fs"], run["table"]
+    print(f"\n{run['label']} ({run['name']})")
+    print("  level (m)  end of hold (s)      F    ordinary   circle entry -> exit x, depth")
+    for level, t in holds(tt, hh):
+        # the last output at or before the end of the hold
+        k = max(i for i in range(len(fs["time"])) if fs["time"][i] <= t + 1e-6)
+        print(f"  {level:8.2f}  {fs['time'][k]:14.0f}  {fs['factor_of_safety'][k]:6.3f}  "
+              f"{fs['ordinary_method'][k]:8.3f}   {fs['entry_x'][k]:5.2f} -> "
+              f"{fs['exit_x'][k]:5.2f}, {fs['max_depth'][k]:4.2f} m")
+    below = np.nonzero(fs["factor_of_safety"] < 1.0)[0]
+    lowest = int(np.nanargmin(fs["factor_of_safety"]))
+    print(f"  lowest F {fs['factor_of_safety'][lowest]:.3f} at t = {fs['time'][lowest]:.0f} s "
+          f"(level {run['level'][lowest]:.2f} m)")
+    if len(below):
+        k = below[0]
+        print(f"  first F < 1: {fs['factor_of_safety'][k]:.3f} at t = {fs['time'][k]:.0f} s, "
+              f"level {run['level'][k]:.2f} m")
+    else:
+        print("  F stays >= 1")
+
+
+def plot_factor(runs, path):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12.5, 5.6))
+    fast = [r for r in runs if r["fs"]["time"][-1] < 1000]
+    for r in fast:
+        ax1.plot(r["fs"]["time"], r["fs"]["factor_of_safety"], label=r["label"], **r["style"])
+    if fast:
+        tt, hh = fast[0]["table"]
+        twin = ax1.twinx()
+        twin.plot(tt, hh, color="0.6", lw=1)
+        twin.set_ylabel("water level (m), grey", color="0.4")
+        twin.set_ylim(0, 12)
+    ax1.axhline(1.0, color="k", lw=0.8)
+    ax1.set_xlabel("time (s): the thesis' schedule (each level in 2 s, held 60 s)")
+    ax1.set_ylabel("factor of safety (critical circle)")
+    ax1.set_ylim(0, None)
+    ax1.grid(alpha=0.3)
+    ax1.set_title("F(t), the thesis' schedule", fontsize=10)
+    for r in runs:
+        tt, hh = r["table"]
+        pts = []
+        for level, t in holds(tt, hh):
+            k = max(i for i in range(len(r["fs"]["time"])) if r["fs"]["time"][i] <= t + 1e-6)
+            pts.append((level, r["fs"]["factor_of_safety"][k]))
+        x, y = zip(*pts)
+        ax2.plot(x, y, marker="o", ms=4, label=r["label"], **r["style"])
+    ax2.axhline(1.0, color="k", lw=0.8)
+    ax2.axvspan(*EXPERIMENT_ONSET, color="0.85", zorder=0, label="experiment: onset 5-6 m")
+    ax2.axvline(THESIS_LEM_LEVEL, color="m", ls=":", label="thesis LEM: F < 1 at 5.8 m")
+    ax2.set_xlabel("water level (m) at the end of its hold")
+    ax2.set_ylabel("factor of safety")
+    ax2.set_ylim(0, None)
+    ax2.grid(alpha=0.3)
+    ax2.set_title("F at the end of each level's hold", fontsize=10)
+    handles, labels = ax2.get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=7.5, loc="lower center", ncol=5)
+    fig.tight_layout(rect=(0, 0.13, 1, 1))
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def points_at(directory, name, time):
+    from scipy.io import netcdf_file
+    with netcdf_file(os.path.join(directory, name + "_points.e"), "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        times = f.variables["time_whole"][:].copy()
+        k = int(np.argmin(abs(times - time)))
+        var = {n: k2 + 1 for k2, n in enumerate(names)}
+        p = f.variables["vals_nod_var%d" % var["pressure_liquid"]][k].copy()
+        x = f.variables["coordx"][:].copy() + f.variables["vals_nod_var%d" % var["displ_x"]][k]
+        y = f.variables["coordy"][:].copy() + f.variables["vals_nod_var%d" % var["displ_y"]][k]
+    return x, y, p, times[k]
+
+
+def circle(fs, k):
+    """The critical circle of evaluation k from entry to exit (its lower arc)."""
+    xc, yc, r = fs["centre_x"][k], fs["centre_y"][k], fs["radius"][k]
+    x = np.linspace(fs["entry_x"][k], fs["exit_x"][k], 200)
+    return x, yc - np.sqrt(np.maximum(r * r - (x - xc) ** 2, 0.0))
+
+
+def plot_circles(runs, path):
+    """p_L of the points with the critical circle: the deck at its lowest F and at its end,
+    the slow-rise run at its first F < 1 (or lowest F)."""
+    panels = []
+    by_name = {r["name"]: r for r in runs}
+    main = by_name.get("experimental_slope_rise")
+    if main:
+        fs = main["fs"]
+        k = int(np.nanargmin(fs["factor_of_safety"]))
+        panels.append((main, fs["time"][k]))
+        panels.append((main, fs["time"][-1]))
+    slow = by_name.get("experimental_slope_rise_slow")
+    if slow:
+        fs = slow["fs"]
+        below = np.nonzero(fs["factor_of_safety"] < 1.0)[0]
+        k = below[0] if len(below) else int(np.nanargmin(fs["factor_of_safety"]))
+        panels.append((slow, fs["time"][k]))
+    if not panels:
+        return
+    try:
+        import scipy.io  # noqa: F401
+    except ImportError:
+        print("no SciPy: critical-circle figure skipped (apt-get install python3-scipy)")
+        return
+    fig, axes = plt.subplots(len(panels), 1, figsize=(7.5, 2.9 * len(panels)),
+                             layout="constrained")
+    image = None
+    for ax, (run, t) in zip(np.atleast_1d(axes), panels):
+        x, y, p, tp = points_at(run["dir"], run["name"], t)
+        norm = matplotlib.colors.TwoSlopeNorm(vmin=-30.0, vcenter=0.0, vmax=60.0)
+        image = ax.scatter(x, y, c=p / 1e3, s=3.0, lw=0, cmap="RdBu_r", norm=norm,
+                           rasterized=True)
+        k = int(np.argmin(abs(run["fs"]["time"] - t)))
+        ax.plot(*circle(run["fs"], k), "k-", lw=1.8)
+        level = run["level"][k]
+        ax.plot([0, 15], [level, level], color="C0", lw=0.8, ls="--")
+        ax.plot(*zip(*SURFACE), color="0.5", lw=0.6)
+        unit = f"{tp / 3600:.1f} h" if tp > 3600 else f"{tp:.0f} s"
+        ax.set_title(f"{run['label']}: t = {unit}, water level {level:.2f} m, "
+                     f"F = {run['fs']['factor_of_safety'][k]:.3f}", fontsize=9)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 15)
+        ax.set_ylim(0, 7)
+        ax.set_ylabel("y (m)")
+    np.atleast_1d(axes)[-1].set_xlabel("x (m); dashed: the water level; black: critical circle")
+    fig.colorbar(image, ax=axes, label="p_L (kPa), suction negative", shrink=0.8)
+    fig.savefig(path, dpi=75)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def plot_drawdown(results, path):
+    """Probe displacements against time and the points at the end of the drawdown, coloured
+    by their displacement; prints the run-out numbers."""
+    directory = os.path.join(results, "experimental_slope_drawdown")
+    name = "experimental_slope_drawdown"
+    if not os.path.exists(os.path.join(directory, name + "_points.e")):
+        return
+    from scipy.io import netcdf_file
+    with netcdf_file(os.path.join(directory, name + "_points.e"), "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        var = {n: k + 1 for k, n in enumerate(names)}
+        times = f.variables["time_whole"][:].copy()
+        x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
+        get = lambda n, k: f.variables["vals_nod_var%d" % var[n]][k].copy()  # noqa: E731
+        ux, uy = get("displ_x", -1), get("displ_y", -1)
+        ux0, uy0 = get("displ_x", 0), get("displ_y", 0)
+    u = np.hypot(ux, uy)
+    x, y = x0 + ux, y0 + uy
+    k = int(np.argmax(u))
+    print(f"\ndrawdown ({name}), t = {times[-1]:.1f} s: largest |u| {u[k]:.2f} m, point "
+          f"from ({x0[k]:.2f}, {y0[k]:.2f}) to ({x[k]:.2f}, {y[k]:.2f})")
+    print(f"  toe: the farthest point at y < 0.5 m is at x = {x[y < 0.5].max():.2f} m "
+          f"(initial toe 11.0 m)")
+    crest = (x0 < 5.0) & (y0 > 5.5)
+    print(f"  crest (x0 < 5 m, y0 > 5.5 m): largest settlement {-uy[crest].min():.2f} m, "
+          f"at x0 = {x0[crest][np.argmin(uy[crest])]:.2f} m")
+    moved = u > 0.1
+    print(f"  points that moved more than 0.1 m: {moved.sum()} of {len(u)}; they started "
+          f"at x >= {x0[moved].min():.2f} m" if moved.any() else "  no point moved 0.1 m")
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12.5, 4.2), width_ratios=[1, 1.6])
+    for probe, colour in (("crest_edge", "C0"), ("mid_slope", "C1"), ("toe", "C2")):
+        pr = read_csv(os.path.join(directory, f"{name}_probe_{probe}.csv"))
+        if pr:
+            ax1.plot(pr["time"], np.hypot(pr["displacement_x"], pr["displacement_y"]),
+                     color=colour, label=probe)
+    ax1.axvspan(2.0, 3.0, color="0.85", label="level 6 -> 3 m")
+    ax1.set_xlabel("time (s): settle 0-2 s, drawdown from 2 s")
+    ax1.set_ylabel("|u| (m)")
+    ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=8)
+    image = ax2.scatter(x, y, c=u, s=3.0, lw=0, cmap="viridis", rasterized=True)
+    ax2.plot(*zip(*SURFACE), "k--", lw=0.8)
+    ax2.plot([0, 15], [3, 3], color="C0", lw=0.8, ls=":")
+    ax2.set_aspect("equal")
+    ax2.set_xlim(0, 15)
+    ax2.set_ylim(0, 6.5)
+    ax2.set_title(f"t = {times[-1]:.0f} s; dashed: initial surface; dotted: level 3 m",
+                  fontsize=9)
+    fig.colorbar(image, ax=ax2, label="|u| (m)", shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--results", default=os.path.join(ROOT, "results"))
+    args = parser.parse_args()
+    runs = load(args.results)
+    if not runs:
+        raise SystemExit(f"no runs of the experimental slope under {args.results}")
+    for r in runs:
+        report(r)
+    plot_factor(runs, os.path.join(HERE, "experimental_slope_factor_of_safety.png"))
+    plot_circles(runs, os.path.join(HERE, "experimental_slope_critical_circle.png"))
+    plot_drawdown(args.results, os.path.join(HERE, "experimental_slope_drawdown.png"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The variants of experimental_slope_rise.yaml: the same deck with one or two inputs changed
+# (the thesis' ten-fold permeability, Table 5.4's MC_1, the strength models of the thesis'
+# LEM). Each variant deck is written to results/experimental_slope_variants/ and run there,
+# one after another (one run at a time). Usage, from the repository root:
+#
+#   inputs/experimental_slope/run_variants.sh [VARIANT ...]     # default: all of them
+#
+# Variants: mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+deck="$here/experimental_slope_rise.yaml"
+out="$root/results/experimental_slope_variants"
+argine="${ARGINE:-$root/build/argine}"
+mkdir -p "$out"
+
+# sed expressions of each change (every one must match exactly once)
+k10='s|Saturated Conductivity (m/s): 5.3e-6|Saturated Conductivity (m/s): 5.3e-5|'
+mc1a='s|Cohesion Increase Max (Pa): 12000  # Table 5.4, MC_2|Cohesion Increase Max (Pa): 15000  # Table 5.4, MC_1|'
+mc1b='s|Cohesion Suction Rate B: 0.07      # Table 5.4, MC_2|Cohesion Suction Rate B: 0.04      # Table 5.4, MC_1|'
+patm='s|Atmospheric Pressure (Pa): 1000$|Atmospheric Pressure (Pa): 101325|'
+fredlund='s|    Minimum Depth (m): 0.5|    Minimum Depth (m): 0.5\n    Suction Strength: fredlund\n    Suction Friction Angle (deg): 20|'
+vanapalli='s|    Minimum Depth (m): 0.5|    Minimum Depth (m): 0.5\n    Suction Strength: vanapalli|'
+
+changes() {
+  case "$1" in
+    mc1) printf '%s\n' "$mc1a" "$mc1b" ;;
+    k10) printf '%s\n' "$k10" ;;
+    k10_mc1) printf '%s\n' "$k10" "$mc1a" "$mc1b" ;;
+    fredlund) printf '%s\n' "$fredlund" ;;
+    vanapalli) printf '%s\n' "$vanapalli" ;;
+    k10_fredlund) printf '%s\n' "$k10" "$fredlund" ;;
+    k10_vanapalli) printf '%s\n' "$k10" "$vanapalli" ;;
+    patm) printf '%s\n' "$patm" ;;
+    k10_patm) printf '%s\n' "$k10" "$patm" ;;
+    *) echo "unknown variant $1" >&2; return 1 ;;
+  esac
+}
+
+variants=("$@")
+[ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm)
+for v in "${variants[@]}"; do changes "$v" > /dev/null; done
+for v in "${variants[@]}"; do
+  name="experimental_slope_rise_$v"
+  target="$out/$name.yaml"
+  cp "$deck" "$target"
+  while IFS= read -r expr; do
+    [ -z "$expr" ] && continue
+    before=$(md5sum < "$target")
+    sed -i "$expr" "$target"
+    [ "$before" != "$(md5sum < "$target")" ] || { echo "$v: no match for $expr" >&2; exit 2; }
+  done < <(changes "$v")
+  sed -i "s|Name: experimental_slope_rise}|Name: $name}|" "$target"
+  echo "== $name"
+  "$argine" check "$target"
+  start=$(date +%s)
+  "$argine" run "$target" --output "$out/$name" --quiet
+  echo "$name: $(( $(date +%s) - start )) s wall"
+done
