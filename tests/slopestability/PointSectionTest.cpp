@@ -44,6 +44,11 @@ TEST(PointRaster, BlockWeightsEnvelopeAndLinearPressure) {
   const SectionPoints wet =
       latticeBelow(top, 0, 2, 0, 0.1, 20e3, [](Real, Real y) { return 9810 * (1.5 - y); });
   EXPECT_NEAR(PointRaster(wet, 0).surfaceWaterPressure(1.23), 4905, 1e-8);
+  // Beyond the outermost points (x = 1.95) the raster's margin column [2.0, 2.2) is empty:
+  // a circle leaving the ground there (x = 2.05) still finds the standing water's pressure,
+  // and p_L from the nearest column's plane.
+  EXPECT_NEAR(PointRaster(wet, 0).surfaceWaterPressure(2.05), 4905, 1e-8);
+  EXPECT_NEAR(PointRaster(wet, 0).porePressure(2.1, 0.5), 9810, 1e-8);
   EXPECT_NEAR(raster.saturation(1, 0.5), 1, 1e-15);
   EXPECT_EQ(raster.material(1, 0.5), 0);
 }

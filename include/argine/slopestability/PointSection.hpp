@@ -53,7 +53,8 @@ class PointRaster {
   /// column's nearest cell with points.
   Real columnWeightDensity(Real x, Real y_bottom, Real y_top) const;
   /// p_L at (x, y) (Pa): the volume-weighted least-squares plane of the p_L of the points
-  /// in the cell at (x, y), or in its column's nearest cell with points; a cell whose points
+  /// in the cell at (x, y), or in its column's nearest cell with points (a column without
+  /// points: the nearest column with points, its plane evaluated at (x, y)); a cell whose points
   /// do not span a plane (fewer than three, or in a line) takes their mean. Exact for a
   /// linear p_L (hydrostatic, steady uniform seepage) up to the surface, where the
   /// effective stress of a shallow slip surface is a small difference of large pressures.
