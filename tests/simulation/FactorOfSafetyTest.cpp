@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "CsvRows.hpp"
+#include "DrySlopeDeck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -19,30 +20,10 @@ namespace {
 
 constexpr Real kDegree = 3.14159265358979323846 / 180;
 
-// A dry 2:1 slope 4 m high (ACADS 1(a)'s shape at 0.4 scale, c' = 1.2 kPa so that c' /
-// (gamma H) stays as in 1(a) with gamma = 0.6 * 2650 * 9.81 = 15598 N/m3), tri3 of 0.25 m, 3
-// points each. Two quasi-static stages; the first hands over below F = 5 (it is near 1).
+// The dry slope of DrySlopeDeck.hpp, tri3 of 0.25 m. Two quasi-static stages; the first hands
+// over below F = 5 (it is near 1).
 std::string deckText(const std::string& extra_stage_key, bool with_section) {
-  std::string deck = R"(argine:
-  Mesh:
-    Generate:
-      Type: polygon
-      Element: tri3
-      Element Size (m): 0.25
-      Lower Left (m): [0.0, 0.0]
-      Upper Right (m): [16.0, 9.0]
-      Regions:
-        soil: {Vertices (m): [0.0, 0.0, 16.0, 0.0, 16.0, 9.0, 12.0, 9.0, 4.0, 5.0, 0.0, 5.0]}
-  Materials:
-    soil:
-      Block: soil
-      Points Per Element: 3
-      Phase Model: dry
-      Porosity: 0.4
-      Solid Density (kg/m3): 2650
-      Solid: {Model: Mohr-Coulomb, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.3, Cohesion (Pa): 1200, Friction Angle (deg): 19.6, Dilatancy Angle (deg): 0}
-      Initial State: {K0: 0.5}
-  Initialisation: {Method: K0 procedure, Ground Surface (m): [0.0, 5.0, 4.0, 5.0, 12.0, 9.0, 16.0, 9.0]}
+  std::string deck = test_decks::drySlopeDeckHead("0.25") + R"(
   Stages:
     hold:
       Solver: quasi-static

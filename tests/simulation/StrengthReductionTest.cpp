@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "CsvRows.hpp"
+#include "DrySlopeDeck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -130,27 +131,10 @@ TEST(DisplacementTrend, AcceleratingDeceleratingAndCreep) {
 // averaging against Tri3 locking (doc/theory.md Sec. 11), relaxed under gravity, then the
 // strength reduction with the stage keys `extra`.
 std::string slopeDeck(const std::string& srm_keys, bool with_srm) {
-  std::string deck = R"(argine:
-  Mesh:
-    Generate:
-      Type: polygon
-      Element: tri3
-      Element Size (m): 0.5
-      Lower Left (m): [0.0, 0.0]
-      Upper Right (m): [16.0, 9.0]
-      Regions:
-        soil: {Vertices (m): [0.0, 0.0, 16.0, 0.0, 16.0, 9.0, 12.0, 9.0, 4.0, 5.0, 0.0, 5.0]}
-  Materials:
-    soil:
-      Block: soil
-      Points Per Element: 3
-      Phase Model: dry
-      Porosity: 0.4
-      Solid Density (kg/m3): 2650
-      Solid: {Model: Mohr-Coulomb, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.3, Cohesion (Pa): 1200, Friction Angle (deg): 19.6, Dilatancy Angle (deg): 0}
-      Initial State: {K0: 0.5}
-      Locking Mitigation: {Volumetric Strain Averaging: nodal}
-  Initialisation: {Method: K0 procedure, Ground Surface (m): [0.0, 5.0, 4.0, 5.0, 12.0, 9.0, 16.0, 9.0]}
+  std::string deck =
+      test_decks::drySlopeDeckHead(
+          "0.5", "      Locking Mitigation: {Volumetric Strain Averaging: nodal}\n") +
+      R"(
   Stages:
     gravity:
       Solver: quasi-static
