@@ -241,12 +241,8 @@ void Simulation::runStage(const StageSpec& stage) {
     progress_->update(summary_.steps, solver_->time(), dt,
                       distributed() ? static_cast<int>(total_points_) : points_.count);
     if (relaxation) {
-      const auto& d = solver_->diagnostics();
-      Real stored = storedElasticEnergy(points_, *relaxation_table);
-      if (distributed())  // the kinetic energies are reduced already
-        MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-      if (relaxation->add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid,
-                          stored)) {
+      if (addRelaxationStep(*relaxation, *relaxation_table)) {
+        const Real stored = relaxation->stored();
         char line[256];
         std::snprintf(line, sizeof line,
                       "stage '%s': relaxed at t = %.6g s after %ld steps: kinetic energy / "
@@ -345,6 +341,14 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
         totals.linear_iterations, stored, totals.inflow);
     std::fflush(stdout);
   }
+}
+
+bool Simulation::addRelaxationStep(RelaxationMonitor& relaxation, const MaterialTable& table) {
+  const auto& d = solver_->diagnostics();
+  Real stored = storedElasticEnergy(points_, table);
+  if (distributed())  // the kinetic energies are reduced already
+    MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return relaxation.add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid, stored);
 }
 
 void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const {

@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <mpi.h>
-
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckWords.hpp"
 #include "argine/output/CsvWriter.hpp"
@@ -19,7 +17,6 @@
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/MaterialTable.hpp"
-#include "argine/physics/StabilityCheck.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -65,19 +62,19 @@ std::vector<Real> mechanismById(const MaterialPoints& points, int ids,
   const auto e = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.deviatoric_strain);
   const auto state = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.plastic_state);
   const auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.id);
-  std::vector<Real> values(static_cast<std::size_t>(ids) * 5,
-                           std::numeric_limits<Real>::quiet_NaN());
-  for (int p = 0; p < points.count; ++p) {
-    const int i = id(p);
-    if (i < 0 || i >= ids) continue;
-    Real* out = &values[static_cast<std::size_t>(i) * 5];
-    out[0] = x(p, 0);
-    out[1] = x(p, 1);
-    out[2] = std::hypot(u(p, 0) - start_u[2 * i], u(p, 1) - start_u[2 * i + 1]);
-    out[3] = e(p) - start_strain[i];
-    out[4] = state(p);
-  }
-  return values;
+  const std::vector<Real> absent(static_cast<std::size_t>(ids) * 5,
+                                 std::numeric_limits<Real>::quiet_NaN());
+  return valuesById(
+      points, ids, 5,
+      [&](int p, Real* out) {
+        const int i = id(p);
+        out[0] = x(p, 0);
+        out[1] = x(p, 1);
+        out[2] = std::hypot(u(p, 0) - start_u[2 * i], u(p, 1) - start_u[2 * i + 1]);
+        out[3] = e(p) - start_strain[i];
+        out[4] = state(p);
+      },
+      &absent);
 }
 
 }  // namespace
@@ -163,14 +160,10 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
                                displacementsById(gatheredPoints(), ids, &start_u));
           next_sample += stage.duration / snapshots;
         }
-        const auto& d = solver_->diagnostics();
-        Real stored = storedElasticEnergy(points_, table);
-        if (distributed())
-          MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
         // Every trial runs the whole Duration (s) and is judged at its end, so that all
         // factors are judged at the same time: a mass that passes for relaxed early may still
         // be creeping (the file comment of StrengthReductionTrial.hpp).
-        relaxation.add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid, stored);
+        addRelaxationStep(relaxation, table);
       }
     } catch (const RunError& error) {  // e.g. points leaving the mesh: the trial failed
       stopped = error.what();

@@ -36,6 +36,8 @@ class RelaxationMonitor {
   Real ratio() const;
   /// Largest kinetic energy of the stage so far (J/m), for the log.
   Real peak() const { return peak_; }
+  /// Stored elastic energy of the last add() (J/m).
+  Real stored() const { return stored_; }
   long steps() const { return steps_; }
   bool relaxed() const { return relaxed_; }
 

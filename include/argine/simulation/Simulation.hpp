@@ -27,6 +27,7 @@ class ProgressReporter;
 class ProbeWriter;
 class RunGuards;
 class RelaxationMonitor;
+class MaterialTable;
 struct CheckpointState;
 
 /// Options of `argine run` that are not part of the deck.
@@ -78,6 +79,9 @@ class Simulation {
   void runStage(const StageSpec& stage);
   void runImplicitSeepageStage(const StageSpec& stage);  ///< implicit seepage (P5)
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
+  /// Adds the last step's kinetic and stored elastic energy (all ranks) to `relaxation`;
+  /// true once relaxed.
+  bool addRelaxationStep(RelaxationMonitor& relaxation, const MaterialTable& table);
   void writeOutput();
   void writeDiagnostics(const MaterialPoints& points);  ///< points: all (gathered) points
   // ---- hydraulic boundary fluxes (P3): <name>_boundary_flux.csv
