@@ -3,12 +3,15 @@
 // (materials/SolidModel.hpp reducedStrength), judged by non-convergence and by accelerating
 // displacement (StrengthReductionTrial.hpp), F chosen by StrengthReductionSearch. The stage
 // leaves the points, the solver and the materials as it found them.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <mpi.h>
 
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckWords.hpp"
@@ -90,7 +93,13 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
   const ExplicitTwoPhaseSolver::ResumeState saved_state = solver_->resumeState();
   const std::vector<MaterialSpec> materials = deck_.materials;
   const MaterialPoints start_points = gatheredPoints();  // all points (rank 0)
-  const int ids = static_cast<int>(totalPoints());
+  // Per-id arrays up to the largest id (points removed by an earlier stage leave gaps).
+  const int ids = [&] {
+    const auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start_points.id);
+    int largest = -1;
+    for (int p = 0; p < start_points.count; ++p) largest = std::max(largest, id(p));
+    return largest + 1;
+  }();
   const std::vector<Real> start_u = displacementsById(start_points, ids);
   const auto strain_host =
       Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start_points.deviatoric_strain);
@@ -192,6 +201,13 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
       trend = displacementTrend(start_u, samples[half].second, samples[three_quarters].second,
                                 end_u, samples[half].first, samples[three_quarters].first, elapsed,
                                 spec.minimum_displacement);
+    // The points are gathered on rank 0 only: its verdict is every rank's, so that all ranks
+    // follow one search.
+    if (distributed()) {
+      int accelerating = trend.accelerating ? 1 : 0;
+      MPI_Bcast(&accelerating, 1, MPI_INT, 0, MPI_COMM_WORLD);
+      trend.accelerating = accelerating != 0;
+    }
     // Not overruled by the relaxation: a mass creeping at a few mm/s carries a kinetic energy
     // below 1e-6 of a slope's stored elastic energy, so a trial can pass for relaxed while
     // its mobilised mass speeds up (the dry slope at 0.125 m, F = 1.05: 1.1 -> 1.2 mm/s).
