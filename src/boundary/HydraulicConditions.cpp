@@ -42,6 +42,16 @@ TimeSeries makeTimeSeries(const TimeSeriesSpec& spec, Real stage_start) {
   return TimeSeries::constant(spec.value);
 }
 
+LinearInX makeLinearInX(const HydraulicSpec& spec, Real stage_start) {
+  LinearInX profile;
+  if (!spec.linear_in_x) return profile;
+  profile.active = true;
+  profile.x0 = spec.x_range[0];
+  profile.x1 = spec.x_range[1];
+  profile.end = makeTimeSeries(spec.end_series, stage_start);
+  return profile;
+}
+
 HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stage,
                                          Real stage_start) {
   for (const BoundarySpec& spec : stage.boundaries) {
@@ -67,6 +77,7 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
     }
     if (spec.kind != BoundaryKind::SeepageFace)
       condition.series = makeTimeSeries(spec.hydraulic.series, stage_start);
+    condition.linear_in_x = makeLinearInX(spec.hydraulic, stage_start);
     condition.above = spec.hydraulic.above;
     condition.pressure_above = spec.hydraulic.pressure_above;
     condition.ponding = spec.hydraulic.ponding;
@@ -75,6 +86,30 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
   }
   sides_used_.resize(conditions_.size());
   current_values_.assign(conditions_.size(), 0.0);
+  current_end_values_.assign(conditions_.size(), 0.0);
+}
+
+namespace {
+
+/// A condition's series value at `time` (0 for a seepage face, which has none) and its value
+/// at x1 (the same value unless the pressure is linear in x).
+std::array<Real, 2> valuesAt(const HydraulicCondition& condition, Real time) {
+  const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
+  return {value, condition.linear_in_x.active ? condition.linear_in_x.end.at(time) : value};
+}
+
+}  // namespace
+
+Real HydraulicConditions::largestCurrentValue(std::size_t condition) const {
+  return std::max(current_values_[condition], current_end_values_[condition]);
+}
+
+bool HydraulicConditions::valuesUnchangedAt(Real time) const {
+  for (std::size_t c = 0; c < conditions_.size(); ++c) {
+    const std::array<Real, 2> values = valuesAt(conditions_[c], time);
+    if (values[0] != current_values_[c] || values[1] != current_end_values_[c]) return false;
+  }
+  return true;
 }
 
 std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& condition,
@@ -106,8 +141,10 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     const int index = static_cast<int>(c);
     const std::vector<FreeSide> sides = sidesOf(condition, boundary);
     sides_used_[c] = sides;
-    const Real value = condition.kind == BoundaryKind::SeepageFace ? 0 : condition.series.at(time);
+    const std::array<Real, 2> values = valuesAt(condition, time);
+    const Real value = values[0];
     current_values_[c] = value;
+    current_end_values_[c] = values[1];
     auto claim = [&](int node, FluxCorrection kind, Real rain) {
       corrections.emplace(node, Claim{static_cast<int>(kind), rain, index});
     };
@@ -135,11 +172,15 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           }
           break;
         }
-        case BoundaryKind::PressureSeries:
-          pressureSideForces(value, value, side.length, side.normal, fa, fb);
-          pressureSideForces(mixtureLoadPressure(value), mixtureLoadPressure(value), side.length,
+        case BoundaryKind::PressureSeries: {
+          // Linear along the side either way: uniform, or linear in x (LinearInX.hpp).
+          const LinearInX& in_x = condition.linear_in_x;
+          const Real pa = in_x.at(value, time, side.xa[0]), pb = in_x.at(value, time, side.xb[0]);
+          pressureSideForces(pa, pb, side.length, side.normal, fa, fb);
+          pressureSideForces(mixtureLoadPressure(pa), mixtureLoadPressure(pb), side.length,
                              side.normal, ma, mb);
           break;
+        }
         case BoundaryKind::Infiltration: {
           const FluxCorrection kind = condition.ponding ? FluxCorrection::InfiltrationPonding
                                                         : FluxCorrection::Infiltration;

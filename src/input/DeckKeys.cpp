@@ -411,6 +411,22 @@ void addHydraulicBoundaryKeys(ListSchema& boundary) {
                    .byDefault(1000.0));
   addTimeSeriesKeys(boundary, "Pressure", "Pa", "pressure series",
                     "prescribed p_L (compression positive)", false);
+  boundary.add(KeySpec::reals("Linear Between x (m)", "m", 2,
+                              "x0, x1 (x0 < x1): p_L varies linearly in x from the Pressure "
+                              "Table/File (at x0) to the End Pressure Table/File (at x1), "
+                              "constant beyond (e.g. the bottom of the thesis' toe-uplift "
+                              "model, Table 5.6); absent: the same p_L all along the condition")
+                   .when("Type", {"pressure series"}));
+  boundary.add(KeySpec::reals("End Pressure Table", "s, Pa", 0,
+                              "with Linear Between x (m): p_L (compression positive) at x1 in "
+                              "time, pairs t0, v0, t1, v1, ... (times increasing; linear "
+                              "between, clamped outside)")
+                   .when("Type", {"pressure series"}));
+  boundary.add(KeySpec::file("End Pressure File",
+                             "with Linear Between x (m): p_L at x1 in time, CSV file with "
+                             "columns time (s), value (Pa), optional header line (relative "
+                             "to the deck)")
+                   .when("Type", {"pressure series"}));
   addTimeSeriesKeys(boundary, "Flux", "m/s", "infiltration",
                     "infiltration flux q into the soil (rain positive, evaporation negative)",
                     true);

@@ -205,6 +205,32 @@ TimeSeriesSpec parseTimeSeries(const DeckSection& boundary, const std::string& v
   return spec;
 }
 
+/// A pressure series' optional x-dependence: `Linear Between x (m)` with exactly one of
+/// `End Pressure Table` / `End Pressure File`, or none of the three.
+void parseLinearInX(const DeckSection& boundary, HydraulicSpec& spec) {
+  const std::string range = "Linear Between x (m)";
+  const bool table = boundary.has("End Pressure Table"), file = boundary.has("End Pressure File");
+  if (!boundary.has(range)) {
+    if (table || file)
+      throw InputError(boundary.pathOf(table ? "End Pressure Table" : "End Pressure File"),
+                       "an end pressure needs 'Linear Between x (m): [x0, x1]', the two "
+                       "abscissas between which p_L varies linearly");
+    return;
+  }
+  const std::array<Real, 2> x = pair(boundary.reals(range));
+  if (!(x[1] > x[0]))
+    throw InputError(boundary.pathOf(range), "expected x0 < x1, got [" + std::to_string(x[0]) +
+                                                 ", " + std::to_string(x[1]) + "]");
+  if (table == file)
+    throw InputError(boundary.pathOf(range),
+                     table ? "give one of 'End Pressure Table' or 'End Pressure File', not both"
+                           : "give 'End Pressure Table' or 'End Pressure File': p_L at x1 in "
+                             "time");
+  spec.linear_in_x = true;
+  spec.x_range = x;
+  spec.end_series = parseTimeSeries(boundary, "End Pressure", "Pa");
+}
+
 HydraulicSpec parseHydraulic(const DeckSection& boundary, BoundaryKind kind) {
   HydraulicSpec spec;
   spec.on_zone = boundary.has("Zone");
@@ -219,6 +245,7 @@ HydraulicSpec parseHydraulic(const DeckSection& boundary, BoundaryKind kind) {
       break;
     case BoundaryKind::PressureSeries:
       spec.series = parseTimeSeries(boundary, "Pressure", "Pa");
+      parseLinearInX(boundary, spec);
       break;
     case BoundaryKind::Infiltration:
       spec.series = parseTimeSeries(boundary, "Flux", "m/s");

@@ -305,14 +305,7 @@ bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
   // with all three unchanged (constant heads and rain, between changes of the boundary) the
   // last plan is the same plan, and rebuilding it (host maps, device copies) is skipped.
   if (!hydraulic_plan_current_ || planned_gravity_ != gravity_) return false;
-  const auto& conditions = hydraulic_.conditions();
-  const auto& values = hydraulic_.currentValues();
-  for (std::size_t c = 0; c < conditions.size(); ++c) {
-    const Real value =
-        conditions[c].kind == BoundaryKind::SeepageFace ? 0 : conditions[c].series.at(time_);
-    if (value != values[c]) return false;
-  }
-  return true;
+  return hydraulic_.valuesUnchangedAt(time_);
 }
 
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
@@ -596,14 +589,14 @@ void ExplicitTwoPhaseSolver::countInflowEnergy() {
   // The liquid that entered through each condition in this step (over the ranks already)
   // with the most energy per kg it can bring (StabilityCheck.hpp: inflowEnergyPerMass).
   const auto& conditions = hydraulic_.conditions();
-  const auto& values = hydraulic_.currentValues();
   for (std::size_t c = 0; c < conditions.size(); ++c) {
     const Real mass = boundary_flux_volumes_[c] * reference_liquid_density_;
     if (!(mass > 0)) continue;
     const HydraulicCondition& h = conditions[c];
     const Real above = h.above == AboveLevel::ConstantPressure ? h.pressure_above : 0;
-    inflow_energy_ += mass * inflowEnergyPerMass(h.kind, values[c], above, h.liquid_density,
-                                                 gravity_, mesh_top_, mesh_bottom_);
+    inflow_energy_ +=
+        mass * inflowEnergyPerMass(h.kind, hydraulic_.largestCurrentValue(c), above,
+                                   h.liquid_density, gravity_, mesh_top_, mesh_bottom_);
   }
 }
 

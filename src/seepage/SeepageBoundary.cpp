@@ -83,9 +83,14 @@ SeepageBoundaryConditions SeepageBoundaryPlan::at(Real t_start, Real t_end, Real
     const std::size_t count = c.nodes.size();
     switch (c.kind) {
       case BoundaryKind::LiquidPressure:
-      case BoundaryKind::PressureSeries:
-        out.addPressures(c.nodes, std::vector<Real>(count, c.series.at(t_end)));
+      case BoundaryKind::PressureSeries: {
+        const Real value = c.series.at(t_end);
+        std::vector<Real> values(count, value);
+        for (std::size_t j = 0; j < count; ++j)
+          values[j] = c.linear_in_x.at(value, t_end, c.abscissas[j]);
+        out.addPressures(c.nodes, values);
         break;
+      }
       case BoundaryKind::TotalHead: {
         // (4.50) with h_g = y: p_L = rho_L g (H - y) below the level.
         const Real head = c.series.at(t_end), rho_g = c.liquid_density * gravity;
@@ -126,7 +131,8 @@ SeepageBoundaryConditions SeepageBoundaryPlan::at(Real t_start, Real t_end, Real
 
 bool SeepageBoundaryPlan::timeDependent() const {
   for (const SeepageCondition& c : conditions)
-    if (!c.series.isConstant()) return true;
+    if (!c.series.isConstant() || (c.linear_in_x.active && !c.linear_in_x.end.isConstant()))
+      return true;
   return false;
 }
 
@@ -165,6 +171,7 @@ SeepageBoundaryPlan seepageBoundaryPlan(const Mesh& mesh, const MaterialPoints& 
       if (!claimed.insert(node).second) continue;
       condition.nodes.push_back(node);
       condition.lengths.push_back(length);
+      condition.abscissas.push_back(X(node, 0));
       condition.heights.push_back(X(node, 1));
     }
     if (pressure) {
@@ -172,6 +179,7 @@ SeepageBoundaryPlan seepageBoundaryPlan(const Mesh& mesh, const MaterialPoints& 
     } else {
       if (spec.kind != BoundaryKind::SeepageFace)
         condition.series = makeTimeSeries(spec.hydraulic.series, stage_start);
+      condition.linear_in_x = makeLinearInX(spec.hydraulic, stage_start);
       condition.above = spec.hydraulic.above;
       condition.pressure_above = spec.hydraulic.pressure_above;
       condition.ponding = spec.hydraulic.ponding;

@@ -35,6 +35,9 @@ StageSurcharge stageSurcharge(const StageSpec& stage) {
       case BoundaryKind::PressureSeries:
         surcharge.surface_pressure =
             std::max(surcharge.surface_pressure, largestValue(boundary.hydraulic.series));
+        if (boundary.hydraulic.linear_in_x)  // the other end of a pressure linear in x
+          surcharge.surface_pressure =
+              std::max(surcharge.surface_pressure, largestValue(boundary.hydraulic.end_series));
         break;
       case BoundaryKind::LiquidPressure:
         surcharge.surface_pressure = std::max(surcharge.surface_pressure, boundary.pressure);

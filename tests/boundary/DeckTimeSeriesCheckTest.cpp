@@ -32,6 +32,17 @@ TEST(DeckTimeSeriesCheck, ATableThatDoesNotIncreaseNamesTheKeyAndRow) {
                          "Stages/later/Boundary Conditions/river/Total Head Table", "row 2");
 }
 
+TEST(DeckTimeSeriesCheck, TheEndSeriesOfAPressureLinearInXIsCheckedToo) {
+  const std::string deck = test::kBaseDeck +
+                           "    later:\n      Solver: explicit\n      Duration (s): 0.1\n"
+                           "      Boundary Conditions:\n"
+                           "        bottom: {Type: pressure series, Side Set: top, Pressure "
+                           "Table: [0, 1, 10, 2], Linear Between x (m): [0, 1], End Pressure "
+                           "Table: [0, 1, 10, 2, 5, 3]}\n";
+  test::expectInputError([&] { checkDeckTimeSeries(test::parseText(deck)); },
+                         "Stages/later/Boundary Conditions/bottom/End Pressure Table", "row 3");
+}
+
 TEST(DeckTimeSeriesCheck, ACsvFileThatDoesNotIncreaseNamesTheKeyAndTheFile) {
   const auto directory = test::testDirectory();
   const std::string csv =

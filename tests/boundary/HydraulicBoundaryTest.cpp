@@ -6,11 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 
 #include "../transfer/TestScenes.hpp"
 #include "argine/boundary/FreeBoundary.hpp"
 #include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/boundary/HydraulicConditions.hpp"
+#include "argine/boundary/LinearInX.hpp"
 #include "argine/boundary/NodalConstraints.hpp"
 #include "argine/boundary/TimeSeries.hpp"
 #include "argine/boundary/Zone.hpp"
@@ -383,6 +385,69 @@ TEST(HydraulicConditions, TableTimesCountFromTheStageStartUnlessToldOtherwise) {
   HydraulicConditions from_simulation(mesh, stage, 1.0);
   from_simulation.plan(1.5, 10.0, boundary);
   EXPECT_DOUBLE_EQ(from_simulation.currentValues()[0], 0.5);
+}
+
+TEST(LinearInX, LinearBetweenTheAbscissasConstantBeyond) {
+  // v0 = 100 at x0 = 2, v1 = 500 at x1 = 6: slope 100 per m.
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, -1), 100);  // before x0: v0
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, 2), 100);
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, 3), 200);
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, 5), 400);
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, 6), 500);
+  EXPECT_DOUBLE_EQ(linearInX(100, 500, 2, 6, 9), 500);  // after x1: v1
+  // A profile whose end series ramps 0 -> 1000 over 10 s: at 5 s, x = 4 is halfway between
+  // v0 = 100 and v1 = 500; inactive, the series' value everywhere.
+  LinearInX profile;
+  profile.x0 = 2;
+  profile.x1 = 6;
+  profile.end = TimeSeries::fromPairs({0, 0, 10, 1000}, "key");
+  EXPECT_DOUBLE_EQ(profile.at(100, 5, 4), 100);
+  profile.active = true;
+  EXPECT_DOUBLE_EQ(profile.at(100, 5, 4), 300);
+}
+
+TEST(HydraulicConditions, PressureLinearInXLoadsTheBaseByItsIntegral) {
+  // A 2 m x 2 m block (2 x 2 quads); on its base (y = 0, outward normal -y) p_L linear in x
+  // from 1000 Pa at x = 0 to 3000 Pa at x = 2 m: nodes x = 0, 1, 2 hold 1000, 2000, 3000.
+  // Linear edge shapes, f_a = (2 pa + pb) L / 6 upwards: x = 0: (2000 + 2000) / 6 = 666.67;
+  // x = 1: (1000 + 4000) / 6 + (4000 + 3000) / 6 = 2000; x = 2: (2000 + 6000) / 6 = 1333.33;
+  // in all int p dx = 4000 N/m. Positive pressures: the mixture carries the same.
+  const Mesh mesh = test::rectangleMesh(2, 2, 2.0, 2.0, ElementType::Quad4);
+  FreeBoundary boundary(mesh);
+  boundary.detect(test::seedUniform(mesh));
+  BoundarySpec base;
+  base.name = "base";
+  base.kind = BoundaryKind::PressureSeries;
+  base.side_set = "bottom";
+  base.hydraulic.series.value = 1000;
+  base.hydraulic.linear_in_x = true;
+  base.hydraulic.x_range = {0.0, 2.0};
+  base.hydraulic.end_series.source = TimeSeriesSpec::Source::Table;
+  base.hydraulic.end_series.pairs = {0.0, 3000.0, 10.0, 5000.0};  // 3000 Pa at t = 0
+  StageSpec stage;
+  stage.name = "uplift";
+  stage.boundaries = {base};
+  HydraulicConditions conditions(mesh, stage);
+  conditions.plan(0.0, 10.0, boundary);
+  const auto node = test::hostCopy(conditions.loads().node);
+  const auto liquid = test::hostCopy(conditions.loads().liquid);
+  const auto mixture = test::hostCopy(conditions.loads().mixture);
+  const auto X = test::hostCopy(mesh.coordinates);
+  std::map<Real, Real> up;  // node x -> upward force
+  for (int j = 0; j < conditions.loads().count(); ++j) {
+    EXPECT_NEAR(liquid(j, 0), 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(mixture(j, 1), liquid(j, 1));
+    up[X(node(j), 0)] += liquid(j, 1);
+  }
+  ASSERT_EQ(up.size(), 3u);
+  EXPECT_NEAR(up[0.0], 4000.0 / 6, 1e-9);
+  EXPECT_NEAR(up[1.0], 2000.0, 1e-9);
+  EXPECT_NEAR(up[2.0], 8000.0 / 6, 1e-9);
+  EXPECT_DOUBLE_EQ(conditions.currentValues()[0], 1000);  // the value at x0
+  EXPECT_DOUBLE_EQ(conditions.largestCurrentValue(0), 3000);
+  // The value at x0 is constant but the end's changes: the plan of t = 0 is not that of 1 s.
+  EXPECT_TRUE(conditions.valuesUnchangedAt(0.0));
+  EXPECT_FALSE(conditions.valuesUnchangedAt(1.0));
 }
 
 TEST(HydraulicConditions, LoadFollowsTheMovingSurface) {

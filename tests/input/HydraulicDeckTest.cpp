@@ -71,6 +71,49 @@ TEST(HydraulicDeck, ConditionsFillZoneSeriesAndOptions) {
   EXPECT_DOUBLE_EQ(b[5].hydraulic.series.value, 1.5);
 }
 
+TEST(HydraulicDeck, PressureLinearInXTakesTwoAbscissasAndAnEndSeries) {
+  const Deck deck = parseText(withConditions(R"(        bottom:
+          Type: pressure series
+          Side Set: top
+          Pressure Table: [0, 82000.0, 60, 102000.0]
+          Linear Between x (m): [0.0, 50.0]
+          End Pressure Table: [0, 82000.0]
+)"));
+  const HydraulicSpec& h = deck.stages[0].boundaries[1].hydraulic;
+  EXPECT_TRUE(h.linear_in_x);
+  EXPECT_DOUBLE_EQ(h.x_range[0], 0.0);
+  EXPECT_DOUBLE_EQ(h.x_range[1], 50.0);
+  EXPECT_EQ(h.series.pairs, (std::vector<Real>{0, 82000, 60, 102000}));
+  EXPECT_EQ(h.end_series.source, TimeSeriesSpec::Source::Table);
+  EXPECT_EQ(h.end_series.pairs, (std::vector<Real>{0, 82000}));
+  EXPECT_EQ(h.end_series.where, "Stages/load/Boundary Conditions/bottom/End Pressure Table");
+  // Without the key the pressure is uniform.
+  const Deck uniform = parseText(withConditions(
+      "        bottom: {Type: pressure series, Side Set: top, Pressure Table: [0, 1.0]}\n"));
+  EXPECT_FALSE(uniform.stages[0].boundaries[1].hydraulic.linear_in_x);
+}
+
+TEST(HydraulicDeck, PressureLinearInXErrorsNameTheKey) {
+  const std::string where = "Stages/load/Boundary Conditions/bottom";
+  const std::string head =
+      "        bottom: {Type: pressure series, Side Set: top, "
+      "Pressure Table: [0, 1.0]";
+  expectDeckError(withConditions(head + ", End Pressure Table: [0, 2.0]}\n"),
+                  where + "/End Pressure Table", "Linear Between x (m)");
+  expectDeckError(withConditions(head + ", Linear Between x (m): [0, 50]}\n"),
+                  where + "/Linear Between x (m)", "End Pressure Table");
+  expectDeckError(withConditions(head + ", Linear Between x (m): [5, 5], "
+                                        "End Pressure Table: [0, 2.0]}\n"),
+                  where + "/Linear Between x (m)", "x0 < x1");
+  expectDeckError(withConditions(head + ", Linear Between x (m): [0, 5, 6], "
+                                        "End Pressure Table: [0, 2.0]}\n"),
+                  where + "/Linear Between x (m)", "2");
+  // The keys belong to a pressure series only.
+  expectDeckError(withConditions("        bottom: {Type: total head, Side Set: top, Total Head "
+                                 "(m): 1.0, Linear Between x (m): [0, 5]}\n"),
+                  where + "/Linear Between x (m)", "only when Type is pressure series");
+}
+
 TEST(HydraulicDeck, FileSeriesIsResolvedFromTheDeckDirectory) {
   const auto directory = test::testDirectory();
   const std::string deck_text = withConditions(

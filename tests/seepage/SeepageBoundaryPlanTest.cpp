@@ -138,6 +138,31 @@ TEST(SeepageBoundaryPlan, ZoneTakesTheFreeSidesWithTheirMidpointInside) {
   EXPECT_NEAR(supply.at(0).first, 1e-5, 1e-20);
 }
 
+TEST(SeepageBoundaryPlan, PressureLinearInXAtEachNodeAtTheStepEnd) {
+  // The top nodes 8 (x = 0) and 9 (x = 0.5): p_L 100 Pa at x0 and a ramp 0 -> 1000 Pa over
+  // 10 s at x1; at the end of a step to 5 s the end holds 500 Pa.
+  Column scene;
+  StageSpec stage;
+  stage.name = "s";
+  BoundarySpec top = sideSetCondition("top", BoundaryKind::PressureSeries, "top");
+  top.hydraulic.series.value = 100;
+  top.hydraulic.linear_in_x = true;
+  top.hydraulic.x_range = {0.0, 0.5};
+  top.hydraulic.end_series = table({0, 0, 10, 1000});
+  stage.boundaries = {top};
+  SeepageBoundaryPlan plan = seepageBoundaryPlan(scene.column.mesh, scene.column.points, stage);
+  EXPECT_TRUE(plan.timeDependent());  // the end's series changes, the start's does not
+  std::map<int, Real> p = pressuresOf(plan.at(0, 5, 1.0));
+  EXPECT_DOUBLE_EQ(p.at(8), 100);
+  EXPECT_DOUBLE_EQ(p.at(9), 500);
+  // x0 = -0.5 m, x1 = 0.5 m: node 8 halfway, (100 + 500) / 2; node 9 at x1.
+  stage.boundaries[0].hydraulic.x_range = {-0.5, 0.5};
+  plan = seepageBoundaryPlan(scene.column.mesh, scene.column.points, stage);
+  p = pressuresOf(plan.at(0, 5, 1.0));
+  EXPECT_DOUBLE_EQ(p.at(8), 300);
+  EXPECT_DOUBLE_EQ(p.at(9), 500);
+}
+
 TEST(SeepageBoundaryPlan, SolverTakesThePressureSeriesAtTheEndOfEachStep) {
   // No gravity, saturated: the top node is Dirichlet; after steps to 4 s and 10 s it holds
   // p(4) = 400 and p(10) = 1000 of the ramp 0 -> 1000 Pa over 10 s.

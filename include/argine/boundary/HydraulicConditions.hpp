@@ -22,6 +22,7 @@
 #include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/boundary/FreeBoundary.hpp"
 #include "argine/boundary/HydraulicAlgebra.hpp"
+#include "argine/boundary/LinearInX.hpp"
 #include "argine/boundary/TimeSeries.hpp"
 #include "argine/boundary/Zone.hpp"
 #include "argine/input/Deck.hpp"
@@ -36,6 +37,7 @@ struct HydraulicCondition {
   Zone zone;                                 ///< where, when on_zone
   std::vector<std::array<int, 2>> side_set;  ///< (element, local side), when !on_zone
   TimeSeries series;                         ///< head (m), pressure (Pa) or infiltration flux (m/s)
+  LinearInX linear_in_x;                     ///< pressure series: `series` at x0, linear to x1
   AboveLevel above = AboveLevel::ConstantPressure;
   Real pressure_above = 0;     ///< (Pa)
   bool ponding = false;        ///< infiltration
@@ -47,6 +49,10 @@ struct HydraulicCondition {
 /// (TimeOrigin::StageStart) is shifted by `stage_start` (s), the simulation time at which
 /// the stage holding the condition begins.
 TimeSeries makeTimeSeries(const TimeSeriesSpec& spec, Real stage_start);
+
+/// The x-dependence of a pressure series (inactive unless `Linear Between x (m)` is given),
+/// its end series on the simulation clock as makeTimeSeries.
+LinearInX makeLinearInX(const HydraulicSpec& spec, Real stage_start);
 
 /// Device lists of one step's nodal corrections (see HydraulicAlgebra: FluxCorrection).
 struct FluxCorrectionList {
@@ -91,8 +97,15 @@ class HydraulicConditions {
   const NodeOwnership& ownership() const { return ownership_; }
   /// The sides each condition used in the last plan (host copies, for tests and plots).
   const std::vector<std::vector<FreeSide>>& sidesUsed() const { return sides_used_; }
-  /// The value of each condition's time series at the last plan's time.
+  /// The value of each condition's time series at the last plan's time (a pressure linear
+  /// in x: the value at x0).
   const std::vector<Real>& currentValues() const { return current_values_; }
+  /// The largest value each condition prescribes anywhere at the last plan's time (a pressure
+  /// linear in x: the larger of its two ends).
+  Real largestCurrentValue(std::size_t condition) const;
+  /// Whether every condition's values at `time` are those of the last plan (then the plan,
+  /// for an unchanged free boundary and gravity, is the same plan).
+  bool valuesUnchangedAt(Real time) const;
 
  private:
   std::vector<FreeSide> sidesOf(const HydraulicCondition& condition,
@@ -104,6 +117,7 @@ class HydraulicConditions {
   NodeOwnership ownership_;
   std::vector<std::vector<FreeSide>> sides_used_;
   std::vector<Real> current_values_;
+  std::vector<Real> current_end_values_;  ///< at x1 (pressure linear in x), else as above
 };
 
 }  // namespace argine

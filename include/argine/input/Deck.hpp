@@ -188,6 +188,11 @@ struct HydraulicSpec {
   bool on_zone = false;  ///< true: the zone on the free boundary; false: BoundarySpec::side_set
   ZoneSpec zone;
   TimeSeriesSpec series;  ///< head (m), pressure (Pa) or flux (m/s, infiltration positive)
+  /// Pressure series only: p_L linear in x from `series` at x_range[0] to `end_series` at
+  /// x_range[1], constant beyond (boundary/LinearInX.hpp); false: uniform along the boundary.
+  bool linear_in_x = false;
+  std::array<Real, 2> x_range{0.0, 0.0};  ///< x0 < x1 (m)
+  TimeSeriesSpec end_series;              ///< p_L at x1 (Pa)
   AboveLevel above = AboveLevel::ConstantPressure;
   Real pressure_above = 0;  ///< (Pa) for AboveLevel::ConstantPressure
   bool ponding = false;     ///< infiltration: rain that cannot infiltrate ponds (true) or runs off

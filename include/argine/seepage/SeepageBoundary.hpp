@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "argine/boundary/LinearInX.hpp"
 #include "argine/boundary/TimeSeries.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/input/Deck.hpp"
@@ -75,10 +76,12 @@ SideSetNodes sideSetNodeLengths(const Mesh& mesh, const SideSet& set);
 struct SeepageCondition {
   std::string name;
   BoundaryKind kind = BoundaryKind::LiquidPressure;
-  std::vector<int> nodes;     ///< mesh nodes it owns (first in deck order), ascending
-  std::vector<Real> lengths;  ///< tributary lengths (m)
-  std::vector<Real> heights;  ///< node y (m)
-  TimeSeries series;          ///< pressure (Pa), head (m) or flux (m/s)
+  std::vector<int> nodes;       ///< mesh nodes it owns (first in deck order), ascending
+  std::vector<Real> lengths;    ///< tributary lengths (m)
+  std::vector<Real> abscissas;  ///< node x (m)
+  std::vector<Real> heights;    ///< node y (m)
+  TimeSeries series;            ///< pressure (Pa), head (m) or flux (m/s)
+  LinearInX linear_in_x;        ///< pressure series: `series` at x0, linear to x1
   AboveLevel above = AboveLevel::ConstantPressure;
   Real pressure_above = 0;     ///< (Pa)
   bool ponding = false;        ///< infiltration: supply always imposed
