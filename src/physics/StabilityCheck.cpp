@@ -132,6 +132,26 @@ std::string describePoint(const MaterialPoints& points, int index, bool non_fini
   return out.str();
 }
 
+namespace {
+
+/// Point p's term of storedElasticEnergy: V |sigma'|^2 / (2 E), plus V n p_L^2 / (2 K_L)
+/// where it carries liquid.
+KOKKOS_INLINE_FUNCTION Real pointStoredEnergy(const MaterialPoints& pts,
+                                              const PointMaterial& material, int p) {
+  Real s2 = 0, e = 0;
+  for (int c = 0; c < kStressComponents; ++c)
+    s2 += pts.stress_effective(p, c) * pts.stress_effective(p, c);
+  const Real young = material.solid.youngs_modulus;
+  if (young > 0) e += pts.volume(p) * s2 / (2 * young);
+  if (carriesLiquid(material.phase)) {
+    const Real pressure = pts.pressure_liquid(p);
+    e += pts.volume(p) * pts.porosity(p) * pressure * pressure / (2 * material.liquid.bulk_modulus);
+  }
+  return e;
+}
+
+}  // namespace
+
 Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& table) {
   const MaterialPoints pts = points;
   const auto materials_m = table.materials();
@@ -139,20 +159,23 @@ Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& tabl
   Kokkos::parallel_reduce(
       "stored_elastic_energy", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, Real& e) {
-        const PointMaterial& material = materials_m(pts.material(p));
-        Real s2 = 0;
-        for (int c = 0; c < kStressComponents; ++c)
-          s2 += pts.stress_effective(p, c) * pts.stress_effective(p, c);
-        const Real young = material.solid.youngs_modulus;
-        if (young > 0) e += pts.volume(p) * s2 / (2 * young);
-        if (carriesLiquid(material.phase)) {
-          const Real pressure = pts.pressure_liquid(p);
-          e += pts.volume(p) * pts.porosity(p) * pressure * pressure /
-               (2 * material.liquid.bulk_modulus);
-        }
+        e += pointStoredEnergy(pts, materials_m(pts.material(p)), p);
       },
       stored);
   return stored;
+}
+
+CompensatedReal compensatedStoredElasticEnergy(const MaterialPoints& points,
+                                               const MaterialTable& table) {
+  const MaterialPoints pts = points;
+  const auto materials_m = table.materials();
+  Kokkos::View<Real*, MemSpace> terms("stored_elastic_energy_terms", points.count);
+  Kokkos::parallel_for(
+      "stored_elastic_energy_terms", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        terms(p) = pointStoredEnergy(pts, materials_m(pts.material(p)), p);
+      });
+  return compensatedSum(terms);
 }
 
 PointEnergies pointEnergies(const MaterialPoints& points, const MaterialTable& table, Real gravity,

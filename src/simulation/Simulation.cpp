@@ -17,6 +17,7 @@
 #include "argine/output/ResultsWriter.hpp"
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
+#include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointInitialisation.hpp"
@@ -345,9 +346,19 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
 
 bool Simulation::addRelaxationStep(RelaxationMonitor& relaxation, const MaterialTable& table) {
   const auto& d = solver_->diagnostics();
-  Real stored = storedElasticEnergy(points_, table);
-  if (distributed())  // the kinetic energies are reduced already
-    MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  Real stored = 0;
+  if (deck_.parallel.reproducible_sums) {  // the same bits on any number of ranks (P7)
+    std::vector<CompensatedReal> sums{compensatedStoredElasticEnergy(points_, table)};
+    if (distributed()) {
+      std::vector<Real> scratch;
+      sumCompensatedOverRanks(MPI_COMM_WORLD, sums, scratch);
+    }
+    stored = sums[0].value();
+  } else {
+    stored = storedElasticEnergy(points_, table);
+    if (distributed())  // the kinetic energies are reduced already
+      MPI_Allreduce(MPI_IN_PLACE, &stored, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  }
   return relaxation.add(solver_->time(), d.kinetic_energy_solid + d.kinetic_energy_liquid, stored);
 }
 

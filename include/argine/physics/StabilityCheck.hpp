@@ -11,6 +11,7 @@
 #include "argine/input/Deck.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
@@ -83,6 +84,10 @@ std::string describePoint(const MaterialPoints& points, int index, bool non_fini
 /// points plus, where there is liquid, sum V n p_L^2 / (2 K_L). Also the reference of a
 /// stage's relaxation test (simulation/RelaxationMonitor.hpp).
 Real storedElasticEnergy(const MaterialPoints& points, const MaterialTable& table);
+/// The same terms summed exactly (transfer/CompensatedSum.hpp): with reproducible sums the
+/// relaxation test reads the same bits on any number of ranks (sumCompensatedOverRanks).
+CompensatedReal compensatedStoredElasticEnergy(const MaterialPoints& points,
+                                               const MaterialTable& table);
 
 /// The parts of the energy scale that are sums over the points (J per m; on several ranks a
 /// rank's share, to be summed over the ranks).
