@@ -127,6 +127,7 @@ std::uintmax_t writeCheckpoint(const std::string& path, std::uint64_t deck_hash,
   out.put<std::uint64_t>(s.boundary_flux_bytes);
   out.putVector(s.probe_bytes);
   out.putVector(s.factor_of_safety_bytes);
+  out.putVector(s.strength_reduction_bytes);
   out.put<std::int64_t>(s.mesh_nodes);
   out.put<std::int64_t>(s.mesh_elements);
   putPoints(out, s.points);
@@ -178,6 +179,7 @@ void readCheckpoint(const std::string& path, std::uint64_t deck_hash, Checkpoint
   s.boundary_flux_bytes = in.get<std::uint64_t>();
   s.probe_bytes = in.getVector<std::uint64_t>();
   s.factor_of_safety_bytes = in.getVector<std::uint64_t>();
+  s.strength_reduction_bytes = in.getVector<std::uint64_t>();
   s.mesh_nodes = in.get<std::int64_t>();
   s.mesh_elements = in.get<std::int64_t>();
   getPoints(in, s.points);

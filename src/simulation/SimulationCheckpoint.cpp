@@ -235,6 +235,9 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
   if (probes_)
     for (const auto bytes : probes_->fileBytes()) s.probe_bytes.push_back(bytes);
   if (factor_of_safety_) s.factor_of_safety_bytes = factor_of_safety_->fileBytes();  // (P13)
+  if (strength_reduction_trials_)                                                    // (P13)
+    s.strength_reduction_bytes = {strength_reduction_trials_->bytes(),
+                                  strength_reduction_points_->bytes()};
   s.mesh_nodes = mesh_.numNodes();
   s.mesh_elements = mesh_.numElements();
   finishCheckpoint(

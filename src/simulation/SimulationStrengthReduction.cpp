@@ -20,6 +20,7 @@
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 #include "argine/physics/MaterialTable.hpp"
+#include "argine/simulation/Checkpoint.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -110,16 +111,40 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
   // their first column (a deck may reduce at several states).
   const std::string stem = options_.output_directory + "/" + deck_.output.name;
   if (writes() && !strength_reduction_trials_) {
-    strength_reduction_trials_ = std::make_unique<CsvWriter>(
-        stem + "_strength_reduction.csv",
-        std::vector<std::string>{
-            "time", "trial", "factor", "converged", "accelerating", "failed",
-            "kinetic_energy_ratio", "duration", "steps", "largest_displacement", "mobilised_points",
-            "mobilised_displacement", "third_quarter_rate", "last_quarter_rate"});
-    strength_reduction_points_ = std::make_unique<CsvWriter>(
-        stem + "_strength_reduction_points.csv",
-        std::vector<std::string>{"time", "factor", "failed", "id", "x", "y", "displacement",
-                                 "deviatoric_strain_increment", "plastic_state"});
+    const std::vector<std::string> trial_columns{"time",
+                                                 "trial",
+                                                 "factor",
+                                                 "converged",
+                                                 "accelerating",
+                                                 "failed",
+                                                 "kinetic_energy_ratio",
+                                                 "duration",
+                                                 "steps",
+                                                 "largest_displacement",
+                                                 "mobilised_points",
+                                                 "mobilised_displacement",
+                                                 "third_quarter_rate",
+                                                 "last_quarter_rate"};
+    const std::vector<std::string> point_columns{"time",
+                                                 "factor",
+                                                 "failed",
+                                                 "id",
+                                                 "x",
+                                                 "y",
+                                                 "displacement",
+                                                 "deviatoric_strain_increment",
+                                                 "plastic_state"};
+    // (P8) a restart after an earlier strength-reduction stage continues its files
+    const std::vector<std::uint64_t> resume =
+        resume_ ? resume_->strength_reduction_bytes : std::vector<std::uint64_t>{};
+    auto open = [&](const std::string& suffix, const std::vector<std::string>& columns,
+                    std::size_t k) {
+      const std::string path = stem + suffix;
+      return resume.size() == 2 ? std::make_unique<CsvWriter>(path, columns, CsvResume{resume[k]})
+                                : std::make_unique<CsvWriter>(path, columns);
+    };
+    strength_reduction_trials_ = open("_strength_reduction.csv", trial_columns, 0);
+    strength_reduction_points_ = open("_strength_reduction_points.csv", point_columns, 1);
   }
   CsvWriter* csv = strength_reduction_trials_.get();
   {

@@ -356,6 +356,88 @@ TEST_F(Restart, CheckpointAtAStageBoundaryAfterAnImplicitStage) {
     EXPECT_EQ(readAll(killed / name), readAll(reference_dir / name)) << name;
 }
 
+// A dry slope (the strength-reduction tests' section, 1 m triangles) brought to rest, then two
+// strength-reduction stages; a checkpoint is due at every stage boundary. The last one on disk
+// is "before 'srm2'": a restart from it must continue the trials and mechanism CSVs that
+// 'srm1' wrote, not start them again.
+const char* kStrengthReductionDeck = R"(argine:
+  Mesh:
+    Generate:
+      Type: polygon
+      Element: tri3
+      Element Size (m): 1.0
+      Lower Left (m): [0.0, 0.0]
+      Upper Right (m): [16.0, 9.0]
+      Regions:
+        soil: {Vertices (m): [0.0, 0.0, 16.0, 0.0, 16.0, 9.0, 12.0, 9.0, 4.0, 5.0, 0.0, 5.0]}
+  Materials:
+    soil:
+      Block: soil
+      Points Per Element: 3
+      Phase Model: dry
+      Porosity: 0.4
+      Solid Density (kg/m3): 2650
+      Solid: {Model: Mohr-Coulomb, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.3, Cohesion (Pa): 1200, Friction Angle (deg): 19.6, Dilatancy Angle (deg): 0}
+      Initial State: {K0: 0.5}
+  Initialisation: {Method: K0 procedure, Ground Surface (m): [0.0, 5.0, 4.0, 5.0, 12.0, 9.0, 16.0, 9.0]}
+  Stages:
+    gravity:
+      Solver: quasi-static
+      Duration (s): 2
+      Local Damping: 0.7
+      Relaxation: {Kinetic Energy Ratio: 1.0e-6, Window (s): 0.5}
+      Boundary Conditions:
+        base: {Type: solid fixity, Node Set: bottom, Direction: both}
+        left: {Type: solid fixity, Node Set: left, Direction: x}
+        right: {Type: solid fixity, Node Set: right, Direction: x}
+    srm1:
+      Solver: quasi-static
+      Duration (s): 1
+      Local Damping: 0.7
+      Relaxation: {Kinetic Energy Ratio: 1.0e-6, Window (s): 0.5}
+      Strength Reduction: {Factor Tolerance: 0.2}
+      Boundary Conditions:
+        base: {Type: solid fixity, Node Set: bottom, Direction: both}
+        left: {Type: solid fixity, Node Set: left, Direction: x}
+        right: {Type: solid fixity, Node Set: right, Direction: x}
+    srm2:
+      Solver: quasi-static
+      Duration (s): 1
+      Local Damping: 0.7
+      Relaxation: {Kinetic Energy Ratio: 1.0e-6, Window (s): 0.5}
+      Strength Reduction: {Factor Tolerance: 0.2, Failure Criterion: either}
+      Boundary Conditions:
+        base: {Type: solid fixity, Node Set: bottom, Direction: both}
+        left: {Type: solid fixity, Node Set: left, Direction: x}
+        right: {Type: solid fixity, Node Set: right, Direction: x}
+  Output:
+    Name: column
+    Checkpoint: {Every Steps: 20}
+)";
+
+TEST_F(Restart, AfterAStrengthReductionStageTheNextOneContinuesItsFiles) {
+  std::ofstream(deck_) << kStrengthReductionDeck;
+  const fs::path reference_dir = reference();
+  CheckpointState state;
+  state.points.allocate(ExodusReadBack((reference_dir / "column_points.e").string()).numNodes());
+  readCheckpoint((reference_dir / "column.checkpoint").string(), fileHash(deck_.string()), state);
+  EXPECT_EQ(state.stage_index, 2);  // before 'srm2'
+  EXPECT_FALSE(state.mid_stage);
+  ASSERT_EQ(state.strength_reduction_bytes.size(), 2u);
+  EXPECT_LT(state.strength_reduction_bytes[0],
+            fs::file_size(reference_dir / "column_strength_reduction.csv"));
+  // Restarted in a copy of the finished run's files: 'srm2' is run again from the checkpoint
+  // and its rows replace those the run wrote after it.
+  const fs::path again = dir_ / "again";
+  fs::copy(reference_dir, again);
+  const Outcome resumed = restart(again, again / "column.checkpoint");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  for (const char* name : {"column_strength_reduction.csv", "column_strength_reduction_points.csv",
+                           "column_diagnostics.csv"})
+    EXPECT_EQ(readAll(again / name), readAll(reference_dir / name)) << name;
+  for (const auto& name : kExodusFiles) expectSameExodus(again / name, reference_dir / name);
+}
+
 TEST_F(Restart, BadCheckpointsAreRefusedNamingTheFileBeforeAnyOutput) {
   const fs::path killed = killedAt(120);
   const fs::path good = killed / "column.checkpoint";

@@ -41,6 +41,8 @@ struct CheckpointState {
   std::uint64_t boundary_flux_bytes = 0;  ///< 0: no boundary flux file
   std::vector<std::uint64_t> probe_bytes;
   std::vector<std::uint64_t> factor_of_safety_bytes;  ///< (P13) its CSV files; empty: none
+  /// (P13) the strength-reduction trials and mechanism CSVs; empty: no such stage ran yet
+  std::vector<std::uint64_t> strength_reduction_bytes;
   // ---- consistency with the deck
   std::int64_t mesh_nodes = 0;
   std::int64_t mesh_elements = 0;
