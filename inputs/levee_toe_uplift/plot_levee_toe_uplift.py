@@ -255,8 +255,8 @@ def plot_map(points, t0, path, name):
     im3 = ax3.scatter(x, y, c=100 * np.hypot(dux, duy), s=7, lw=0, cmap="viridis")
     sub = np.arange(0, len(x), 5)
     ax3.quiver(x[sub], y[sub], dux[sub], duy[sub], color="k", width=0.0012)
-    fig.colorbar(im3, ax=ax3, label="|u - u(hand-over)| (cm)", shrink=0.8)
-    ax3.set_title(f"displacement since the hand-over to the explicit MPM "
+    fig.colorbar(im3, ax=ax3, label="|u - u(169 min)| (cm)", shrink=0.8)
+    ax3.set_title(f"displacement since the end of Phase 3 (the hand-over of the main deck) "
                   f"(t = {(first['time'] - t0) / 60:.1f} min)", fontsize=9)
     for ax in (ax1, ax2, ax3):
         ax.plot(*zip(*SURFACE), "k--", lw=0.6)
@@ -271,7 +271,7 @@ def plot_map(points, t0, path, name):
                   f"dotted: S1", fontsize=9)
     ax3.set_xlabel("x (m)")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=65)
     plt.close(fig)
 
 
