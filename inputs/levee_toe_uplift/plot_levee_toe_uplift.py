@@ -361,13 +361,89 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
                   f"{y0[strained].min():.1f}..{y0[strained].max():.1f}")
 
 
+def points_at(results, name, t):
+    """Positions, displacement, deviatoric strain and p_L of the points at the output nearest t,
+    and the displacement at the end of Phase 3."""
+    from scipy.io import netcdf_file
+    with netcdf_file(os.path.join(results, f"{name}_points.e"), "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        var = {n: k + 1 for k, n in enumerate(names)}
+        times = f.variables["time_whole"][:].copy()
+        k = int(np.argmin(np.abs(times - t)))
+        t0 = times[1]
+        h = int(np.where(times <= t0 + 60 * PHASE_ENDS_MIN[2] + 25)[0][-1])
+        get = lambda n, j: f.variables["vals_nod_var%d" % var[n]][j].copy()  # noqa: E731
+        out = dict(time=times[k], x0=f.variables["coordx"][:].copy(),
+                   y0=f.variables["coordy"][:].copy(), ux=get("displ_x", k),
+                   uy=get("displ_y", k), dx=get("displ_x", k) - get("displ_x", h),
+                   dy=get("displ_y", k) - get("displ_y", h),
+                   eps=get("deviatoric_strain", k), p=get("pressure_liquid", k))
+    return out
+
+
+def compare_variants(runs, path, minute=170.0):
+    """The permeability-ratio table at `minute` (thesis Fig. 5.38: 170 min) and a figure of the
+    deviatoric strain and p_L of each run then. runs: (label, results, name)."""
+    print(f"\nvariants at {minute:g} min: label | uplift (5 / 10 kPa) | F | points with "
+          f"deviatoric strain > 1 % (x0 range) | largest |u - u(169 min)| | mean p_L of the "
+          f"levee above y = 2 m")
+    fig, axes = plt.subplots(len(runs), 2, figsize=(13, 2.6 * len(runs)), squeeze=False)
+    for row, (label, results, name) in enumerate(runs):
+        t0, _ = settle_end(results, name)
+        frames = effective_series(load_section(results, name))
+        times = np.array(sorted(frames))
+        t = times[np.argmin(np.abs(times - (t0 + 60 * minute)))]
+        L5, _ = uplift_length(frames[t], 5e3)
+        L10, _ = uplift_length(frames[t], 10e3)
+        fos = columns(read_csv(os.path.join(results, f"{name}_factor_of_safety.csv")))
+        F = fos["factor_of_safety"][np.argmin(np.abs(fos["time"] - t))]
+        pts = points_at(results, name, t)
+        strained = pts["eps"] > 0.01
+        du = np.hypot(pts["dx"], pts["dy"])
+        j = int(np.argmax(du))
+        levee = (pts["y0"] > 2.0)
+        print(f"  {label:10s} t = {(pts['time'] - t0) / 60:.2f} min | {L5:.0f} / {L10:.0f} m | "
+              f"{F:.3f} | {strained.sum()} ("
+              + (f"{pts['x0'][strained].min():.1f}..{pts['x0'][strained].max():.1f}"
+                 if strained.any() else "-")
+              + f") | {100 * du[j]:.1f} cm at "
+              f"({pts['x0'][j]:.1f}, {pts['y0'][j]:.1f}) | "
+              f"{pts['p'][levee].mean() / 1e3:.1f} kPa")
+        x, y = pts["x0"] + pts["ux"], pts["y0"] + pts["uy"]
+        a, b = axes[row]
+        im = a.scatter(x, y, c=pts["eps"], s=4, lw=0, cmap="magma_r", vmin=0, vmax=0.03)
+        fig.colorbar(im, ax=a, shrink=0.8, label="dev. strain")
+        im = b.scatter(x, y, c=pts["p"] / 1e3, s=4, lw=0, cmap="RdBu_r", vmin=-100, vmax=100)
+        fig.colorbar(im, ax=b, shrink=0.8, label="p_L (kPa)")
+        for ax in (a, b):
+            ax.set_aspect("equal")
+            ax.set_ylim(-6.2, 6.8)
+            ax.set_title(f"{label}, t = {(pts['time'] - t0) / 60:.1f} min", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=65)
+    plt.close(fig)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--name", default="levee_toe_uplift")
     parser.add_argument("--results")
     parser.add_argument("--figures", default=HERE)
     parser.add_argument("--threshold", type=float, default=5.0, help="kPa")
+    parser.add_argument("--variants", action="store_true",
+                        help="the permeability-ratio table and figure (run_variants.sh first)")
     args = parser.parse_args()
+    if args.variants:
+        v = os.path.join(ROOT, "results", "levee_toe_uplift_variants")
+        runs = [("1e-1", os.path.join(v, "levee_toe_uplift_ratio1e-1"),
+                 "levee_toe_uplift_ratio1e-1"),
+                ("1e-2", os.path.join(ROOT, "results", "levee_toe_uplift"), "levee_toe_uplift"),
+                ("1e-3", os.path.join(v, "levee_toe_uplift_ratio1e-3"),
+                 "levee_toe_uplift_ratio1e-3")]
+        runs = [r for r in runs if os.path.exists(os.path.join(r[1], r[2] + "_points.e"))]
+        compare_variants(runs, os.path.join(args.figures, "levee_toe_uplift_ratios.png"))
+        return
     name = args.name
     results = args.results or os.path.join(ROOT, "results", name)
     threshold = 1e3 * args.threshold
