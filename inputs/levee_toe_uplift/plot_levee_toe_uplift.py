@@ -44,6 +44,7 @@ SURFACE = [(0, 0), (11, 0), (20, 6), (24, 6), (33, 0), (50, 0)]
 LAYERS = [(0, -3.6, 50, -3.6)]
 PHASE_ENDS_MIN = [8, 53, 169, 351, 553]  # Table 5.6, cumulative
 OVERBURDEN_KPA = 73.44  # thesis: 3.6 m of clay outside the levee's footprint
+HANDOVER_MIN = 169.0  # the end of Phase 3: the main deck's hand-over (--handover)
 
 
 def read_csv(path):
@@ -129,11 +130,11 @@ def plot_interface(frames, t0, path, name):
     and the last output."""
     times = np.array(sorted(frames))
     shown = []
-    for m in PHASE_ENDS_MIN[:3]:
+    for m in [p for p in PHASE_ENDS_MIN if p <= HANDOVER_MIN]:
         cands = times[times <= t0 + 60 * m + 25]
         if len(cands) and cands[-1] not in shown:
             shown.append(cands[-1])
-    for t in (times[np.argmin(np.abs(times - (t0 + 60 * 170)))], times[-1]):
+    for t in (times[np.argmin(np.abs(times - (t0 + 60 * (HANDOVER_MIN + 1))))], times[-1]):
         if t not in shown and t > shown[-1]:
             shown.append(t)
     fig, axes = plt.subplots(len(shown), 1, figsize=(9, 2.3 * len(shown)), sharex=True)
@@ -201,7 +202,7 @@ def plot_history(results, name, t0, path):
     ax1.set_ylabel("displacement (m)")
     ax1.legend(fontsize=7)
     ax1.grid(alpha=0.3)
-    start = 169.0
+    start = HANDOVER_MIN
     last = max(ax1.get_lines()[0].get_xdata()) if ax1.get_lines() else start + 10
     ax2.set_xlim(start - 0.5, max(last, start + 1) + 0.5)
     ax2.set_xlabel("time (min), explicit stage")
@@ -235,7 +236,7 @@ def read_points(results, name):
         # (within 25 s after the end of Phase 3, as in plot_interface)
         k = int(np.searchsorted(times, times[0] + 1e-9))  # skip t = 0
         t0 = times[1] if len(times) > 1 else times[0]
-        k = int(np.where(times <= t0 + 60 * PHASE_ENDS_MIN[2] + 25)[0][-1])
+        k = int(np.where(times <= t0 + 60 * HANDOVER_MIN + 25)[0][-1])
         first = {n: f.variables["vals_nod_var%d" % var[n]][k].copy()
                  for n in ("displ_x", "displ_y")}
         first["time"] = times[k]
@@ -255,8 +256,8 @@ def plot_map(points, t0, path, name):
     im3 = ax3.scatter(x, y, c=100 * np.hypot(dux, duy), s=7, lw=0, cmap="viridis")
     sub = np.arange(0, len(x), 5)
     ax3.quiver(x[sub], y[sub], dux[sub], duy[sub], color="k", width=0.0012)
-    fig.colorbar(im3, ax=ax3, label="|u - u(169 min)| (cm)", shrink=0.8)
-    ax3.set_title(f"displacement since the end of Phase 3 (the hand-over of the main deck) "
+    fig.colorbar(im3, ax=ax3, label=f"|u - u({HANDOVER_MIN:g} min)| (cm)", shrink=0.8)
+    ax3.set_title(f"displacement since the hand-over to the explicit stage "
                   f"(t = {(first['time'] - t0) / 60:.1f} min)", fontsize=9)
     for ax in (ax1, ax2, ax3):
         ax.plot(*zip(*SURFACE), "k--", lw=0.6)
@@ -280,7 +281,7 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
     print(f"{name}: event time origin (end of settle) t0 = {t0:.3f} s")
     print("uplift length (m) in 11 < x < 50 m, clay points at S1, |sigma'_v| < "
           f"{threshold / 1e3:g} / 2 / 10 kPa, and where:")
-    for m in (8, 53, 120, 169, 170, 172, 175, 180):
+    for m in (8, 53, 120, 169, 170, 172, 175, 180, 351, 352, 355, 361):
         t = t0 + 60 * m
         if t > times[-1] + 1:
             continue
@@ -311,7 +312,7 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
     ke = diag["kinetic_energy_solid"] + diag["kinetic_energy_liquid"]
     j = int(np.argmax(ke))
     print(f"kinetic energy: largest {ke[j]:.3g} J/m at {(diag['time'][j] - t0) / 60:.2f} min")
-    late = diag["time"] > t0 + 60 * PHASE_ENDS_MIN[2] + 25
+    late = diag["time"] > t0 + 60 * HANDOVER_MIN + 25
     if late.any():
         tl, kl = diag["time"][late], ke[late]
         j = int(np.argmax(kl))
@@ -322,7 +323,7 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
         p = os.path.join(results, f"{name}_probe_{probe}.csv")
         if os.path.exists(p):
             pr = columns(read_csv(p))
-            for m in (169, 1e9):
+            for m in (HANDOVER_MIN, 1e9):
                 sel = pr["time"] <= t0 + 60 * m + 30
                 j = np.where(sel)[0][-1]
                 print(f"  {probe:15s} t = {(pr['time'][j] - t0) / 60:7.2f} min: u = "
@@ -331,7 +332,7 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
     p = os.path.join(results, f"{name}_probe_toe.csv")
     if os.path.exists(p):
         pr = columns(read_csv(p))
-        late = pr["time"] > t0 + 60 * PHASE_ENDS_MIN[2] + 25
+        late = pr["time"] > t0 + 60 * HANDOVER_MIN + 25
         if late.any():
             sp = np.hypot(pr["velocity_x"], pr["velocity_y"])[late]
             tl = pr["time"][late]
@@ -372,7 +373,7 @@ def points_at(results, name, t):
         times = f.variables["time_whole"][:].copy()
         k = int(np.argmin(np.abs(times - t)))
         t0 = times[1]
-        h = int(np.where(times <= t0 + 60 * PHASE_ENDS_MIN[2] + 25)[0][-1])
+        h = int(np.where(times <= t0 + 60 * HANDOVER_MIN + 25)[0][-1])
         get = lambda n, j: f.variables["vals_nod_var%d" % var[n]][j].copy()  # noqa: E731
         out = dict(time=times[k], x0=f.variables["coordx"][:].copy(),
                    y0=f.variables["coordy"][:].copy(), ux=get("displ_x", k),
@@ -431,9 +432,13 @@ def main():
     parser.add_argument("--results")
     parser.add_argument("--figures", default=HERE)
     parser.add_argument("--threshold", type=float, default=5.0, help="kPa")
+    parser.add_argument("--handover", type=float, default=169.0,
+                        help="minute of the hand-over to the explicit stage (351 for _phase5)")
     parser.add_argument("--variants", action="store_true",
                         help="the permeability-ratio table and figure (run_variants.sh first)")
     args = parser.parse_args()
+    global HANDOVER_MIN
+    HANDOVER_MIN = args.handover
     if args.variants:
         v = os.path.join(ROOT, "results", "levee_toe_uplift_variants")
         runs = [("1e-1", os.path.join(v, "levee_toe_uplift_ratio1e-1"),
