@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "../output/ExodusReadBack.hpp"
+#include "DrySlopeDeck.hpp"
 #include "argine/checkpoint/CheckpointFile.hpp"
 #include "argine/simulation/Checkpoint.hpp"
 
@@ -360,27 +361,7 @@ TEST_F(Restart, CheckpointAtAStageBoundaryAfterAnImplicitStage) {
 // strength-reduction stages; a checkpoint is due at every stage boundary. The last one on disk
 // is "before 'srm2'": a restart from it must continue the trials and mechanism CSVs that
 // 'srm1' wrote, not start them again.
-const char* kStrengthReductionDeck = R"(argine:
-  Mesh:
-    Generate:
-      Type: polygon
-      Element: tri3
-      Element Size (m): 1.0
-      Lower Left (m): [0.0, 0.0]
-      Upper Right (m): [16.0, 9.0]
-      Regions:
-        soil: {Vertices (m): [0.0, 0.0, 16.0, 0.0, 16.0, 9.0, 12.0, 9.0, 4.0, 5.0, 0.0, 5.0]}
-  Materials:
-    soil:
-      Block: soil
-      Points Per Element: 3
-      Phase Model: dry
-      Porosity: 0.4
-      Solid Density (kg/m3): 2650
-      Solid: {Model: Mohr-Coulomb, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.3, Cohesion (Pa): 1200, Friction Angle (deg): 19.6, Dilatancy Angle (deg): 0}
-      Initial State: {K0: 0.5}
-  Initialisation: {Method: K0 procedure, Ground Surface (m): [0.0, 5.0, 4.0, 5.0, 12.0, 9.0, 16.0, 9.0]}
-  Stages:
+const std::string kStrengthReductionDeck = test_decks::drySlopeDeckHead("1.0") + R"(  Stages:
     gravity:
       Solver: quasi-static
       Duration (s): 2
