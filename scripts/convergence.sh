@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Mesh convergence of a levee scene (issue P11 item 3): runs the deck at several element
+# sizes, nothing else changed, and tabulates the run-out quantities at the same times with
+# their changes and observed order (scripts/levee_convergence.py), and charts them against
+# wall time.
+#   scripts/convergence.sh [deck.yaml] [element sizes (m)...]
+#   default: inputs/levee_drawdown/levee_drawdown.yaml at 0.2 and 0.1 m
+# CONVERGENCE_TIMES (s after the event started; default "2 3 20"), CONVERGENCE_START (the
+# simulation time the event starts at; default 1), ARGINE_RANKS (MPI ranks per run).
+# Results in results/convergence/<scene>_h<size>/, the chart in
+# results/convergence/<scene>_convergence.png. A run whose results exist is not repeated
+# (delete its folder to rerun it).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+deck=${1:-$root/inputs/levee_drawdown/levee_drawdown.yaml}
+shift || true
+sizes=("$@")
+((${#sizes[@]})) || sizes=(0.2 0.1)
+"$root/scripts/build.sh"
+build_dir=${ARGINE_BUILD_DIR:-$root/build}
+scene=$(basename "$deck" .yaml)
+out=$root/results/convergence
+mkdir -p "$out"
+ranks=${ARGINE_RANKS:-1}
+launcher=()
+if ((ranks > 1)); then
+  launcher=(mpiexec -n "$ranks" --oversubscribe)
+  if ((EUID == 0)); then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+fi
+grep -q "Element Size (m):" "$deck" || { echo "$deck: no 'Element Size (m):' to change" >&2; exit 2; }
+runs=()
+for h in "${sizes[@]}"; do
+  name=${scene}_h$h
+  dir=$out/$name
+  runs+=("$h:$dir:$name")
+  if [[ -f $dir/$name.log ]] && grep -q "simulated in" "$dir/$name.log"; then
+    echo "h = $h m: results exist in $dir"
+    continue
+  fi
+  mkdir -p "$dir"
+  # the deck beside the original (relative file keys keep working), removed afterwards
+  copy=$(dirname "$deck")/.convergence_$name.yaml
+  sed -e "s/Element Size (m): [0-9.eE+-]*/Element Size (m): $h/" \
+    -e "s/Name: [A-Za-z0-9_]*}/Name: $name}/" "$deck" >"$copy"
+  echo "h = $h m: running $deck -> $dir"
+  status=0
+  "${launcher[@]}" "$build_dir/argine" run "$copy" --output "$dir" >"$dir/$name.log" 2>&1 || status=$?
+  rm -f "$copy"
+  if ((status != 0)); then
+    echo "h = $h m: argine failed ($status), see $dir/$name.log" >&2
+    mv "$dir/$name.log" "$dir/$name.failed.log"
+  fi
+done
+# shellcheck disable=SC2086
+/usr/bin/python3 "$root/scripts/levee_convergence.py" "${runs[@]}" \
+  --times ${CONVERGENCE_TIMES:-2 3 20} --start "${CONVERGENCE_START:-1}" \
+  --figure "$out/${scene}_convergence.png"

@@ -1,0 +1,162 @@
+#!/usr/bin/python3
+"""Mesh convergence of a levee scene's run-out (issue P11 item 3).
+
+  levee_convergence.py [--times T ...] [--start S] [--figure PATH] H:DIR:NAME[:SERIES] ...
+
+Each H:DIR:NAME is one resolution: element size H (m), the results folder DIR and the deck's
+Output Name NAME (DIR/NAME_points.e, DIR/NAME.log from scripts/convergence.sh for the wall
+time); SERIES (optional) groups the runs of one scheme (e.g. FLIP, TPIC), each tabulated
+and charted on its own. For every resolution and every time (s since the event started, the simulation time
+minus --start) it measures, from the material points (Exodus II, read with SciPy):
+
+  crest settlement   mean -u_y of the points that started within 0.3 m of the crest surface
+                     and 0.3 m of the symmetry axis (m)
+  toe run-out        how far the slid mass passed the initial toe x = 6 m: the mass-weighted
+                     99th percentile of the current x of the points that moved > 10 cm,
+                     minus 6 m (m; objective under refinement, unlike the farthest point)
+  slip depth         under the crest, x0 in [0.8, 1.2] m: the depth below the crest (y = 3 m)
+                     of the lowest point whose displacement is at least half that of the
+                     column's top point (m)
+  mobilised volume   the volume of the points that moved > 10 cm (m^3 per m)
+
+and prints them with the change against the next finer resolution and, with three, the observed
+order p = log2(|q_h - q_h/2| / |q_h/2 - q_h/4|) (for halving). With --figure it charts each
+quantity at the last time against the wall time of its run, one line per series: the
+coarsest model that is still right is the leftmost point near where the lines end.
+"""
+import argparse
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+CREST_Y, TOE_X = 3.0, 6.0  # the levee_drawdown / levee_rainfall geometry (m)
+MOVED = 0.10  # a point has "moved" beyond this displacement (m)
+QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
+
+
+def read_points(path):
+    from scipy.io import netcdf_file
+
+    with netcdf_file(path, "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        want = {"displ_x", "displ_y", "volume"}
+        values = {n: f.variables["vals_nod_var%d" % (k + 1)][:].copy()
+                  for k, n in enumerate(names) if n in want}
+        x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
+        time = f.variables["time_whole"][:].copy()
+    return time, x0, y0, values
+
+
+def weighted_percentile(x, w, q):
+    order = np.argsort(x)
+    cumulative = np.cumsum(w[order])
+    return x[order][np.searchsorted(cumulative, q * cumulative[-1])]
+
+
+def measure(x0, y0, ux, uy, volume):
+    u = np.hypot(ux, uy)
+    crest = (x0 < 0.3) & (y0 > CREST_Y - 0.3)
+    moved = u > MOVED
+    out = {"crest settlement": float(-uy[crest].mean()) if crest.any() else math.nan,
+           "mobilised volume": float(volume[moved].sum())}
+    out["toe run-out"] = (float(weighted_percentile(x0[moved] + ux[moved], volume[moved], 0.99))
+                          - TOE_X) if moved.sum() > 10 else 0.0
+    column = (x0 > 0.8) & (x0 < 1.2)
+    top = u[column][np.argmax(y0[column])]
+    sliding = column & (u >= 0.5 * top)
+    out["slip depth"] = float(CREST_Y - y0[sliding].min()) if top > MOVED else 0.0
+    return out
+
+
+def wall_time(directory, name):
+    log = os.path.join(directory, name + ".log")
+    if not os.path.exists(log):
+        return math.nan
+    with open(log) as handle:
+        match = re.findall(r"simulated in ([0-9.e+]+) s wall", handle.read())
+    return float(match[-1]) if match else math.nan
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("runs", nargs="+", help="H:DIR:NAME")
+    parser.add_argument("--times", type=float, nargs="+", default=[2.0, 3.0, 20.0])
+    parser.add_argument("--start", type=float, default=1.0,
+                        help="simulation time at which the event starts (s)")
+    parser.add_argument("--figure", help="accuracy-against-wall-time chart (PNG)")
+    args = parser.parse_args()
+    runs = []
+    for spec in args.runs:
+        h, directory, name, *series = spec.split(":")
+        path = os.path.join(directory, name + "_points.e")
+        if not os.path.exists(path):
+            sys.exit(f"no {path}")
+        time, x0, y0, v = read_points(path)
+        rows = {}
+        for t in args.times:
+            k = int(np.argmin(np.abs(time - (args.start + t))))
+            if abs(time[k] - (args.start + t)) > 1e-6:
+                continue  # this run did not reach t
+            rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
+        runs.append({"h": float(h), "points": len(x0), "wall": wall_time(directory, name),
+                     "rows": rows, "series": series[0] if series else ""})
+    groups = {}
+    for r in runs:
+        groups.setdefault(r["series"], []).append(r)
+    for label, group in groups.items():
+        group.sort(key=lambda r: -r["h"])  # coarse to fine
+        table(label, group, args.times)
+
+    if args.figure:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        last = max(args.times)
+        fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(13, 3.2), layout="constrained")
+        for ax, q in zip(axes, QUANTITIES):
+            for label, group in groups.items():
+                t = max((t for t in args.times if all(t in r["rows"] for r in group)),
+                        default=None)
+                if t is None:
+                    continue
+                walls = [r["wall"] for r in group]
+                values = [r["rows"][t][q] for r in group]
+                ax.semilogx(walls, values, "o-", label=f"{label or 'runs'} ({t:g} s)")
+                for r, w, value in zip(group, walls, values):
+                    ax.annotate(f"{r['h']:.2g} m", (w, value), fontsize=7)
+            ax.set_title(q + (" (m3/m)" if q == "mobilised volume" else " (m)"), fontsize=9)
+            ax.set_xlabel("wall time (s)")
+        axes[0].legend(fontsize=7)
+        fig.suptitle(f"values after the event started (last common time up to {last:g} s) "
+                     "against the run's wall time", fontsize=9)
+        fig.savefig(args.figure, dpi=110)
+        print(f"\nwrote {args.figure}")
+
+
+def table(label, runs, times):
+    print(f"\n{label or 'runs'}: element size (m), points, wall time (s)")
+    for r in runs:
+        print(f"  {r['h']:.3g} m  {r['points']:6d} points  {r['wall']:.0f} s")
+    for t in times:
+        print(f"\n{label} t = {t:g} s after the event started")
+        print("| quantity | " + " | ".join(f"h = {r['h']:.3g} m" for r in runs)
+              + " | change h->h/2 | order |")
+        print("|---|" + "---|" * (len(runs) + 2))
+        for q in QUANTITIES:
+            values = [r["rows"][t][q] if t in r["rows"] else math.nan for r in runs]
+            changes = [b - a for a, b in zip(values, values[1:])]
+            order = (math.log2(abs(changes[0]) / abs(changes[1]))
+                     if len(changes) >= 2 and changes[1] != 0 and changes[0] != 0 else math.nan)
+            unit = "m3/m" if q == "mobilised volume" else "m"
+            print(f"| {q} ({unit}) | " + " | ".join(f"{v:.3f}" for v in values) + " | "
+                  + ", ".join(f"{c:+.3f}" for c in changes) + f" | {order:.2f} |")
+
+
+if __name__ == "__main__":
+    main()
