@@ -71,6 +71,12 @@ AcadsProblem problem1c() {
   p.band_min = 1.374;
   p.band_max = 1.414;
   p.band_source = "Slide2 GLE 1.374 to SLOPE/W Bishop 1.414; ACADS referee 1.39";
+  // Slide2's critical circle, centre and the two ground intersections as printed in its
+  // problem 3 figure (x 29.702 and 50.991, both 18.781 from the centre).
+  p.published_circle = {34.121, 43.254, 18.781};
+  p.published_circle_bishop = 1.405;
+  p.published_circle_spencer = 1.375;
+  p.published_circle_source = "Slide2 problem 3";
   return p;
 }
 

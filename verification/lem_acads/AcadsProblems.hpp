@@ -33,6 +33,13 @@ struct AcadsProblem {
   /// [band_min, band_max]; band_source says where each end comes from.
   Real band_min = 0, band_max = 0;
   std::string band_source;
+  /// A published critical circle, if the source prints one (radius 0: none). argine's
+  /// Bishop and Spencer F on it are reported beside the published F, not judged: they
+  /// separate the method from the search (the published F came from the source's own search
+  /// and slicing).
+  SlipCircle published_circle;
+  Real published_circle_bishop = 0, published_circle_spencer = 0;
+  std::string published_circle_source;
 };
 
 /// All problems, in the order of the report.

@@ -15,6 +15,7 @@
 #include "argine/slopestability/Bishop.hpp"
 #include "argine/slopestability/BlockSearch.hpp"
 #include "argine/slopestability/CircleSearch.hpp"
+#include "argine/slopestability/CircularSlip.hpp"
 #include "argine/slopestability/PolylineSlip.hpp"
 #include "argine/slopestability/Spencer.hpp"
 
@@ -26,6 +27,9 @@ using namespace argine::lem_acads;
 
 struct Row {
   Real bishop = NAN, spencer = NAN, janbu = NAN, theta = NAN;
+  /// Bishop and Spencer on the published critical circle, sliced as the search slices
+  /// (NaN: the problem has none).
+  Real published_bishop = NAN, published_spencer = NAN;
   std::string surface;  ///< the critical surface, for the log
   bool ok = false;
 };
@@ -101,12 +105,45 @@ Row run(const AcadsProblem& p) {
   return row;
 }
 
-bool inBand(Real f, const AcadsProblem& p) {
-  return f >= p.band_min && f <= p.band_max;
-}
-
 Real percent(Real f, Real ref) {
   return 100 * (f - ref) / ref;
+}
+
+/// Bishop's and Spencer's F on `circle` (Spencer's moment about its centre, as in the search).
+void bothOnCircle(const AcadsProblem& p, const SlipCircle& circle, int slice_count,
+                  bool split_at_materials, Real& bishop_f, Real& spencer_f) {
+  const SlipMass mass = sliceCircle(p.section, circle, slice_count, split_at_materials);
+  bishop_f = bishopSimplified(mass.slices).value;
+  SpencerOptions o;
+  o.use_moment_point = true;
+  o.moment_x = circle.centre_x;
+  o.moment_y = circle.centre_y;
+  spencer_f = spencer(mass.slices, o).factor.value;
+}
+
+/// The published critical circle, reported (not judged): with the search's slicing, with
+/// 1000 slices (the slicing converged) and with equal slices without the cuts at layer tops
+/// (the slicing of a program that does not cut there).
+void reportPublishedCircle(const AcadsProblem& p, Row& row) {
+  const SlipCircle& c = p.published_circle;
+  bothOnCircle(p, c, p.grid.slice_count, p.grid.split_at_materials, row.published_bishop,
+               row.published_spencer);
+  Real bishop_fine = 0, spencer_fine = 0, bishop_equal = 0, spencer_equal = 0;
+  bothOnCircle(p, c, 1000, p.grid.split_at_materials, bishop_fine, spencer_fine);
+  bothOnCircle(p, c, p.grid.slice_count, false, bishop_equal, spencer_equal);
+  std::printf(
+      "  on the published critical circle (%.3f, %.3f) R %.3f (%s): Bishop %.4f "
+      "(published %.3f, %+.2f %%), Spencer %.4f (published %.3f, %+.2f %%); 1000 "
+      "slices: %.4f / %.4f; %d equal slices, no cuts: %.4f / %.4f\n",
+      c.centre_x, c.centre_y, c.radius, p.published_circle_source.c_str(), row.published_bishop,
+      p.published_circle_bishop, percent(row.published_bishop, p.published_circle_bishop),
+      row.published_spencer, p.published_circle_spencer,
+      percent(row.published_spencer, p.published_circle_spencer), bishop_fine, spencer_fine,
+      p.grid.slice_count, bishop_equal, spencer_equal);
+}
+
+bool inBand(Real f, const AcadsProblem& p) {
+  return f >= p.band_min && f <= p.band_max;
 }
 
 /// f with `digits` decimals; empty for NaN (no value: Bishop on a non-circular surface).
@@ -129,12 +166,13 @@ int main(int argc, char** argv) {
   const std::string csv_path = output + "/lem_" + which + ".csv";
   std::ofstream csv(csv_path);
   csv << "case,problem,referee,band_min,band_max,bishop,spencer,spencer_theta_deg,janbu,"
-         "diff_bishop_pct,diff_spencer_pct,within_band\n";
+         "diff_bishop_pct,diff_spencer_pct,within_band,published_circle_bishop,"
+         "published_circle_spencer\n";
   bool all_ok = true, any = false;
   for (const AcadsProblem& p : acadsProblems()) {
     if (which != "all" && which != p.key) continue;
     any = true;
-    const Row row = run(p);
+    Row row = run(p);
     const bool circular = p.kind == SurfaceKind::CircleSearch;
     const bool ok = row.ok && inBand(row.spencer, p) && (!circular || inBand(row.bishop, p));
     all_ok = all_ok && ok;
@@ -149,11 +187,13 @@ int main(int argc, char** argv) {
                 row.spencer, percent(row.spencer, p.referee), row.theta * 180 / M_PI, row.janbu,
                 ok ? "within the spread" : "OUTSIDE the spread");
     std::printf("  critical: %s\n", row.surface.c_str());
+    if (p.published_circle.radius > 0) reportPublishedCircle(p, row);
     csv << p.key << ",\"" << p.title << "\"," << fixed(p.referee, 3) << "," << fixed(p.band_min, 3)
         << "," << fixed(p.band_max, 3) << "," << fixed(row.bishop, 4) << ","
         << fixed(row.spencer, 4) << "," << fixed(row.theta * 180 / M_PI, 2) << ","
         << fixed(row.janbu, 4) << "," << fixed(percent(row.bishop, p.referee), 2) << ","
-        << fixed(percent(row.spencer, p.referee), 2) << "," << (ok ? "yes" : "no") << "\n";
+        << fixed(percent(row.spencer, p.referee), 2) << "," << (ok ? "yes" : "no") << ","
+        << fixed(row.published_bishop, 4) << "," << fixed(row.published_spencer, 4) << "\n";
   }
   if (!any) {
     std::cerr << "lem_acads: no problem named " << which << "\n";
