@@ -727,6 +727,17 @@ ListSchema stageKeys() {
                 .atMost(1)
                 .byDefault(0.0)
                 .when("Velocity Transfer", {"FLIP"}));
+  stage.add(KeySpec::choice("Liquid Drag", Words{"explicit", "implicit"},
+                            "explicit: the Darcy drag Q_L (v_L - v_S) at t^k (Eq. 4.36, the "
+                            "thesis), which bounds the step by about 2 rho_L k / (n S_L g) "
+                            "times the mass scaling (the criteria's drag terms); implicit: "
+                            "the drag at the new velocities, solved node by node with the "
+                            "mixture equation (backward Euler in the drag, stable for any k): "
+                            "the criteria drop their drag terms; the stage needs 'cfl undrained' "
+                            "and 'consolidation' or 'infiltration' among its criteria "
+                            "(doc/theory.md Sec. 3.1, doc/stability.md)")
+                .byDefault(std::string("explicit"))
+                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(KeySpec::choice("Liquid Pressure", Words{"free", "held"},
                             "free: the liquid flows and p_L follows the mass balance; held: "
                             "p_L and S_L stay as the stage finds them and the liquid moves "

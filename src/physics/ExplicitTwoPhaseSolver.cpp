@@ -117,8 +117,9 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   momentum_.liquid_with_solid = stage.hold_liquid_pressure;
+  momentum_.implicit_drag = stage.implicit_drag;
   gravity_ = stage.gravity;
-  time_step_.configure(stage.time_step, stage.mass_scaling, stage.name);
+  time_step_.configure(stage.time_step, stage.mass_scaling, stage.name, stage.implicit_drag);
   boundaries_ = StageBoundaryConditions(mesh_, stage);
   side_walls_.configure(boundaries_.sideWalls(), mesh_.numNodes());
   hydraulic_ = HydraulicConditions(mesh_, stage, time_);  // tables count from the stage start
@@ -239,7 +240,7 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
     applyHydraulicLoads();  // Sec. 4: free boundary, 4.51, head 4.50 / pressure loads
   });
   timed(StepPhase::NodalSolve, [&] {
-    solveLiquidMomentum();                    // step 1 (4.36)
+    solveLiquidMomentum(dt);                  // step 1 (4.36)
     solveMixtureMomentum();                   // step 2 (4.37)
     applyAccelerationBoundaryConditions(dt);  // fixities, impermeable boundaries, walls
     side_walls_.constrainAccelerations(nodes_in_use_, momentum_, dt, grid_);  // channel walls
@@ -382,8 +383,8 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
 
-void ExplicitTwoPhaseSolver::solveLiquidMomentum() {
-  argine::solveLiquidMomentum(nodes_in_use_, momentum_, grid_);
+void ExplicitTwoPhaseSolver::solveLiquidMomentum(Real dt) {
+  argine::solveLiquidMomentum(nodes_in_use_, momentum_, dt, grid_);
 }
 
 void ExplicitTwoPhaseSolver::solveMixtureMomentum() {
@@ -391,7 +392,7 @@ void ExplicitTwoPhaseSolver::solveMixtureMomentum() {
 }
 
 void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions(Real dt) {
-  constrainAccelerations(boundaries_.constraints(), momentum_, grid_);
+  constrainAccelerations(boundaries_.constraints(), momentum_, dt, grid_);
   // The walls after the fixities: a fixity of a wall node wins there component by component.
   // Completed sums at a shared node give every rank holding it the same contact.
   constrainWallContactAccelerations(boundaries_.frictionalContact(), momentum_, dt, grid_);

@@ -6,13 +6,38 @@
 
 namespace argine {
 
-void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                          GridFields& grid) {
   if (settings.liquid_with_solid) return;  // solveMixtureMomentum sets a_L = a_S
   const auto nodes = active.nodes();
   const GridFields g = grid;
   const Real alpha = settings.local_damping;
   const Real scaling = settings.mass_scaling;
+  if (settings.implicit_drag) {
+    const bool fixed_skeleton = settings.fixed_skeleton;
+    Kokkos::parallel_for(
+        "solve_liquid_momentum_implicit_drag", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+        KOKKOS_LAMBDA(const int j) {
+          const int i = nodes(j);
+          const Real mass = g.mass_liquid_intrinsic_i(i);
+          if (!(mass > 0)) {
+            g.acceleration_liquid_i(i, 0) = g.acceleration_liquid_i(i, 1) = 0;
+            return;
+          }
+          const Real solid_mass = scaling * g.mass_solid_i(i);
+          // the solid follows the mixture equation (a_S != 0) where solveMixtureMomentum
+          // solves it
+          const bool coupled = !fixed_skeleton && solid_mass > 0;
+          for (int d = 0; d < kDim; ++d) {
+            const Real relative = g.velocity_liquid_i(i, d) - g.velocity_solid_i(i, d);
+            g.acceleration_liquid_i(i, d) = implicitDragLiquidAcceleration(
+                g.force_liquid_i(i, d), g.force_mixture_i(i, d), g.drag_i(i), relative,
+                g.velocity_liquid_i(i, d), dt, scaling * mass, scaling * g.mass_liquid_i(i),
+                solid_mass, coupled, alpha);
+          }
+        });
+    return;
+  }
   Kokkos::parallel_for(
       "solve_liquid_momentum", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -70,7 +95,7 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
 }
 
 void constrainAccelerations(const NodalConstraints& constraints, const MomentumSettings& settings,
-                            GridFields& grid) {
+                            Real dt, GridFields& grid) {
   const auto nodes = constraints.nodes();
   const auto flags = constraints.flags();
   const GridFields g = grid;
@@ -78,6 +103,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
   const Real scaling = settings.mass_scaling;
   const bool fixed_skeleton = settings.fixed_skeleton;
   const bool liquid_with_solid = settings.liquid_with_solid;
+  const bool implicit_drag = settings.implicit_drag;
   Kokkos::parallel_for(
       "constrain_accelerations", Kokkos::RangePolicy<ExecSpace>(0, constraints.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -95,7 +121,14 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
           }
           if (fixed) {
             g.acceleration_solid_i(i, d) = 0;
-            if (locked) g.acceleration_liquid_i(i, d) = 0;
+            if (locked) {
+              g.acceleration_liquid_i(i, d) = 0;
+            } else if (implicit_drag && has_liquid) {  // the liquid against a_S,d = 0
+              const Real relative = g.velocity_liquid_i(i, d) - g.velocity_solid_i(i, d);
+              g.acceleration_liquid_i(i, d) = implicitDragLiquidAcceleration(
+                  g.force_liquid_i(i, d), 0, g.drag_i(i), relative, g.velocity_liquid_i(i, d), dt,
+                  scaling * g.mass_liquid_intrinsic_i(i), 0, 0, false, alpha);
+            }
           }
         }
       });

@@ -19,12 +19,13 @@ TimeStepControl::TimeStepControl(const Mesh& mesh)
     : element_size_(elementCharacteristicSizes(mesh)) {}
 
 void TimeStepControl::configure(const TimeStepSpec& spec, Real mass_scaling,
-                                const std::string& stage) {
+                                const std::string& stage, bool implicit_drag) {
   const std::string where = "Stages/" + stage + "/Time Step";
   automatic_ = spec.automatic;
   fixed_step_ = spec.fixed_step;
   safety_factor_ = spec.safety_factor;
   mass_scaling_ = mass_scaling;
+  implicit_drag_ = implicit_drag;
   update_interval_ = spec.update_interval > 0 ? spec.update_interval : 1;
   if (!automatic_ && !(fixed_step_ > 0)) {
     std::ostringstream out;
@@ -52,6 +53,7 @@ struct CriterionArrays {
   MaterialPoints points;
   Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p;
   Real mass_scaling = 1;
+  bool implicit_drag = false;
 
   KOKKOS_INLINE_FUNCTION CriterionInput input(int p) const {
     CriterionInput in;
@@ -61,6 +63,7 @@ struct CriterionArrays {
     in.liquid_bulk_modulus = gathered_p(p, kGatheredBulkModulus);
     in.constrained_modulus = gathered_p(p, kGatheredConstrainedModulus);
     in.mass_scaling = mass_scaling;
+    in.implicit_drag = implicit_drag;
     in.saturation = points.saturation(p);
     in.saturation_suction_derivative = gathered_p(p, kGatheredSaturationSlope);
     in.liquid_density = points.density_liquid(p);
@@ -194,7 +197,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         gathered_p(p, kGatheredHeldTo) = held_to;
         limit_p(p) = held_to == kHeldToLiquid ? kUnlimited : kmath::quietNaN();
       });
-  const CriterionArrays arrays{points, gathered_p, mass_scaling_};
+  const CriterionArrays arrays{points, gathered_p, mass_scaling_, implicit_drag_};
   if (any_wet)
     for (const CriterionKind kind : criteria_)
       lowerLimitByCriterion(kind, arrays, points.count, limit_p);

@@ -112,6 +112,25 @@ TEST(DeckValidation, CriteriaAreCheckedWordByWord) {
                   "Stages/load/Time Step/Criteria", "'cfl dry' is listed twice");
 }
 
+TEST(DeckValidation, ImplicitDragNeedsTheUndrainedAndADiffusionCriterion) {
+  // Liquid Drag: implicit drops the drag terms of the criteria; the undrained wave and the
+  // explicit pressure diffusion must still bound the step (doc/theory.md Sec. 3.1).
+  const std::string implicit =
+      "Duration (s): 0.1\n      Liquid Drag: implicit\n"
+      "      Time Step: {Criteria: \"";
+  const std::string why =
+      "with 'Liquid Drag: implicit' expected 'cfl undrained' and "
+      "'consolidation' or 'infiltration' among the criteria";
+  expectDeckError(replaced(kBaseDeck, "Duration (s): 0.1", implicit + "cfl undrained, mieremet\"}"),
+                  "Stages/load/Time Step/Criteria", why);
+  expectDeckError(replaced(kBaseDeck, "Duration (s): 0.1", implicit + "mieremet, consolidation\"}"),
+                  "Stages/load/Time Step/Criteria", why);
+  const Deck deck = parseText(
+      replaced(kBaseDeck, "Duration (s): 0.1", implicit + "cfl undrained, infiltration\"}"));
+  EXPECT_TRUE(deck.stages[0].implicit_drag);
+  EXPECT_FALSE(parseText(kBaseDeck).stages[0].implicit_drag);  // the thesis' explicit drag
+}
+
 TEST(DeckValidation, MissingFileIsReportedWithTheResolvedPath) {
   const auto directory = testDirectory();
   const std::string deck = replaced(kBaseDeck,

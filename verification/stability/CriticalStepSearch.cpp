@@ -80,7 +80,8 @@ RunOutcome runFixedStep(const Deck& deck, Real dt, Real duration, Real kinetic_e
       spec.safety_factor = 1;
       spec.criteria = {kind};
       controls.emplace_back(mesh);
-      controls.back().configure(spec, deck.stages.front().mass_scaling, "tracking");
+      controls.back().configure(spec, deck.stages.front().mass_scaling, "tracking",
+                                deck.stages.front().implicit_drag);
     }
     outcome.criteria_min.assign(controls.size(), std::numeric_limits<Real>::infinity());
   }

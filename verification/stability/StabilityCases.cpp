@@ -188,6 +188,7 @@ CriterionInput criterionInputOf(const Deck& deck) {
   in.constrained_modulus = constrainedModulus(soil.solid);
   in.hydraulic_conductivity = soil.conductivity.saturated_conductivity;
   in.mass_scaling = deck.stages.front().mass_scaling;
+  in.implicit_drag = deck.stages.front().implicit_drag;
   return in;
 }
 

@@ -285,6 +285,9 @@ struct StageSpec {
   /// `Liquid Pressure: held` (quasi-static stages): p_L and S_L stay as the stage found them
   /// while the skeleton settles into equilibrium with them; the liquid moves with the solid.
   bool hold_liquid_pressure = false;
+  /// `Liquid Drag: implicit`: the Darcy drag at the new velocities, solved node by node with
+  /// the mixture equation (MomentumBalance.hpp); false: at t^k, the thesis' explicit scheme.
+  bool implicit_drag = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

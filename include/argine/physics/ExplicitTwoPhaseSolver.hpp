@@ -260,7 +260,7 @@ class ExplicitTwoPhaseSolver {
   void applyHydraulicLoads();
   void detectFreeBoundary();
   bool hydraulicPlanIsCurrent() const;
-  void solveLiquidMomentum();
+  void solveLiquidMomentum(Real dt);
   void solveMixtureMomentum();
   void applyAccelerationBoundaryConditions(Real dt);
   void correctHydraulicAccelerations(Real dt);

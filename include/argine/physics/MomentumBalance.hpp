@@ -8,6 +8,18 @@
 /// component, v the phase's nodal velocity at t^k. Nodes without liquid mass skip the liquid
 /// equation (a_L = 0). In fixed-skeleton mode a_S = 0 and only the liquid moves. With the
 /// liquid pressure held, the liquid moves with the solid: one mixture equation per node.
+///
+/// Implicit drag (`Liquid Drag: implicit`, doc/theory.md Sec. 3.1): the drag acts on the
+/// relative velocity at t^{k+1}, r + dt (a_L - a_S), r = v_L - v_S at t^k. With a_S from
+/// the mixture equation, a_S = (F_m - M_L a_L) / M_S (F_m = f^ext - f^int of the mixture),
+/// the liquid equation becomes one linear equation per node and direction:
+///   a_L = [F_L - Q r + Q dt F_m / M_S] / [M~_L + Q dt (1 + M_L / M_S)],
+/// and a_S = (F_m - M_L a_L) / M_S as before (masses times the scaling, Q not: it is
+/// viscous). Without solid mass, on a fixed skeleton or in a solid-fixed direction a_S = 0
+/// and a_L = (F_L - Q r) / (M~_L + Q dt). The relative velocity then decays as backward
+/// Euler, r^{k+1} = r^k / (1 + dt Q (1 + M_L/M_S) / M~_L) without forces: stable for any
+/// Q dt, so the drag no longer bounds the step. At Q dt -> 0 it is the explicit solve; at
+/// Q dt -> infinity both phases take F_m / (M_S + M_L) (undrained).
 
 #include "argine/core/Types.hpp"
 
@@ -25,6 +37,8 @@ struct MomentumSettings {
   /// Held liquid pressure (StageSpec::hold_liquid_pressure): the liquid moves with the solid
   /// at every node, a_L = a_S = damped (f^ext - f^int) / (M_S + M_L); no liquid equation.
   bool liquid_with_solid = false;
+  /// The drag at the new velocities (StageSpec::implicit_drag; see the file comment).
+  bool implicit_drag = false;
 };
 
 /// The local damping force of one component: -alpha |force| sign(velocity).
@@ -33,8 +47,9 @@ KOKKOS_INLINE_FUNCTION Real localDampingForce(Real alpha, Real force, Real veloc
   return velocity > 0 ? -alpha * magnitude : (velocity < 0 ? alpha * magnitude : 0);
 }
 
-/// Step 1: liquid accelerations a_L on the active nodes (4.36).
-void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+/// Step 1: liquid accelerations a_L on the active nodes (4.36); dt (s) is the step, read
+/// only with the implicit drag.
+void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                          GridFields& grid);
 
 /// Step 2: solid accelerations a_S on the active nodes (4.37), using a_L of step 1.
@@ -45,9 +60,29 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
 /// locked to the solid in direction d (impermeable), both phases share one acceleration
 /// from the mixture equation alone: (M_S + M_L) a_d = f^ext_d - f^int_d (damped with the
 /// solid velocity), which replaces steps 1-2 in that direction. Then solid-fixed directions
-/// get a_S,d = 0 and, if also locked, a_L,d = 0. In fixed-skeleton mode every direction is
-/// solid-fixed.
+/// get a_S,d = 0 and, if also locked, a_L,d = 0; with the implicit drag a solid-fixed,
+/// unlocked direction re-solves a_L,d against a_S,d = 0. In fixed-skeleton mode every
+/// direction is solid-fixed.
 void constrainAccelerations(const NodalConstraints& constraints, const MomentumSettings& settings,
-                            GridFields& grid);
+                            Real dt, GridFields& grid);
+
+/// The implicit-drag liquid acceleration of one direction (see the file comment): the
+/// unbalanced liquid force F_L - Q r + Q dt F_m / M_S over M~_L + Q dt (1 + M_L/M_S), each
+/// mass already scaled; `coupled` false (a_S = 0) drops the M_S terms. Local damping acts
+/// on that numerator with the liquid velocity, as on the explicit force.
+KOKKOS_INLINE_FUNCTION Real implicitDragLiquidAcceleration(Real liquid_force, Real mixture_force,
+                                                           Real drag, Real relative_velocity,
+                                                           Real liquid_velocity, Real dt,
+                                                           Real intrinsic_liquid_mass,
+                                                           Real liquid_mass, Real solid_mass,
+                                                           bool coupled, Real alpha) {
+  Real numerator = liquid_force - drag * relative_velocity;
+  Real denominator = intrinsic_liquid_mass + drag * dt;
+  if (coupled) {
+    numerator += drag * dt * mixture_force / solid_mass;
+    denominator += drag * dt * liquid_mass / solid_mass;
+  }
+  return (numerator + localDampingForce(alpha, numerator, liquid_velocity)) / denominator;
+}
 
 }  // namespace argine

@@ -59,7 +59,9 @@ class TimeStepControl {
   /// Takes the stage's settings; the next call to next() recomputes. Throws InputError
   /// ("Stages/<stage>/Time Step/...") for a non-positive fixed step or safety factor, or an
   /// automatic step without criteria.
-  void configure(const TimeStepSpec& spec, Real mass_scaling, const std::string& stage);
+  /// `implicit_drag`: the stage solves the drag implicitly (CriterionInput::implicit_drag).
+  void configure(const TimeStepSpec& spec, Real mass_scaling, const std::string& stage,
+                 bool implicit_drag = false);
 
   /// The step to take now: recomputed on the first call after configure() and then every
   /// update_interval calls. Throws RunError when no criterion limits the step, or when the
@@ -116,6 +118,7 @@ class TimeStepControl {
   Real fixed_step_ = 0;
   Real safety_factor_ = 0.5;
   Real mass_scaling_ = 1;
+  bool implicit_drag_ = false;
   int update_interval_ = 1;
   int calls_since_update_ = 0;
   bool stale_ = true;

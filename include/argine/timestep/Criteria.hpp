@@ -19,6 +19,10 @@
 ///    so rho_sat, rho_m): wave criteria grow like sqrt(f). It does NOT touch the drag
 ///    coefficient (rho_L g / k, a viscous property) nor the parabolic criteria
 ///    (consolidation, infiltration), which have no inertia.
+///  - Implicit drag (`Liquid Drag: implicit`, MomentumBalance.hpp): the drag no longer
+///    bounds the step, so liquidDrag is 0 and the momentum criteria reduce to their
+///    undamped wave limits (xi = 0, a = 0); the parabolic criteria keep k: the pore pressure
+///    still diffuses explicitly through the mass balance.
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
@@ -39,6 +43,7 @@ struct CriterionInput {
   Real hydraulic_conductivity = 0;         ///< k = k_sat k_r(S_L) (m/s)
   Real gravity = kStandardGravity;         ///< g used in k = kappa rho_L g / mu_L (m/s^2)
   Real mass_scaling = 1;                   ///< f >= 1, multiplies the densities
+  bool implicit_drag = false;              ///< the drag solved implicitly: no drag terms
 };
 
 /// Every criterion, in enum order (for name lookup and loops).
@@ -94,6 +99,7 @@ KOKKOS_INLINE_FUNCTION Real dragCoefficient(const CriterionInput& in) {
 
 /// q_L = S_L n mu_L / kappa (Pa s / m^2), Eq. 7.7; 0 without liquid (even if k = 0).
 KOKKOS_INLINE_FUNCTION Real liquidDrag(const CriterionInput& in) {
+  if (in.implicit_drag) return 0;
   const Real liquid_fraction = in.saturation * in.porosity;
   if (!(liquid_fraction > 0)) return 0;
   return liquid_fraction * dragCoefficient(in);
