@@ -8,11 +8,16 @@ Reads, where present (DIR defaults to the repository's results/):
   DIR/experimental_slope_rise_slow/            experimental_slope_rise_slow.yaml
   DIR/experimental_slope_variants/<name>/      the runs of run_variants.sh
   DIR/experimental_slope_drawdown/             experimental_slope_drawdown.yaml (explicit)
+  DIR/experimental_slope/, DIR/experimental_slope_slow/
+                                               experimental_slope.yaml, _slow.yaml (the whole
+                                               test: implicit rise, drained equilibria,
+                                               explicit drawdown)
 Each run's water level comes from the Total Head Table of its own deck (the variants' decks
 are in DIR/experimental_slope_variants/). Writes next to this script:
   experimental_slope_factor_of_safety.png  F against time and against the water level
   experimental_slope_critical_circle.png   p_L of the points and the critical circle
   experimental_slope_drawdown.png          the drawdown: probes and the final deposit
+  experimental_slope_whole_test.png        the whole-test decks: F(t), probes, deposits
 and prints, per run, F at the end of every water level's hold and the first level at which
 F < 1.
 """
@@ -103,6 +108,20 @@ def load(results):
         runs.append(dict(label=label, name=name, dir=directory, fs=fs, style=style,
                          table=(tt, hh), level=np.interp(fs["time"], tt, hh)))
     return runs
+
+
+def point_displacements(path):
+    """(times, x0, y0, [(u_x, u_y) per output]) of a points file (Exodus)."""
+    from scipy.io import netcdf_file
+    with netcdf_file(path, "r", mmap=False) as f:
+        names = ["".join(c.decode() for c in row).strip("\x00 ")
+                 for row in f.variables["name_nod_var"][:]]
+        var = {n: k + 1 for k, n in enumerate(names)}
+        times = f.variables["time_whole"][:].copy()
+        x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
+        ux, uy = (f.variables["vals_nod_var%d" % var[n]] for n in ("displ_x", "displ_y"))
+        displacement = [(ux[k].copy(), uy[k].copy()) for k in range(len(times))]
+    return times, x0, y0, displacement
 
 
 def report(run):
@@ -247,16 +266,9 @@ def plot_drawdown(results, path):
     name = "experimental_slope_drawdown"
     if not os.path.exists(os.path.join(directory, name + "_points.e")):
         return
-    from scipy.io import netcdf_file
-    with netcdf_file(os.path.join(directory, name + "_points.e"), "r", mmap=False) as f:
-        names = ["".join(c.decode() for c in row).strip("\x00 ")
-                 for row in f.variables["name_nod_var"][:]]
-        var = {n: k + 1 for k, n in enumerate(names)}
-        times = f.variables["time_whole"][:].copy()
-        x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
-        get = lambda n, k: f.variables["vals_nod_var%d" % var[n]][k].copy()  # noqa: E731
-        ux, uy = get("displ_x", -1), get("displ_y", -1)
-        ux0, uy0 = get("displ_x", 0), get("displ_y", 0)
+    times, x0, y0, displacement = point_displacements(
+        os.path.join(directory, name + "_points.e"))
+    ux, uy = displacement[-1]
     u = np.hypot(ux, uy)
     x, y = x0 + ux, y0 + uy
     k = int(np.argmax(u))
@@ -296,18 +308,146 @@ def plot_drawdown(results, path):
     print(f"wrote {path}")
 
 
+def stage_plan(deck):
+    """[(name, duration, output interval)] of the deck's stages, in order."""
+    with open(deck) as f:
+        text = f.read()
+    body = text[text.index("  Stages:") + len("  Stages:"):]
+    end = re.search(r"^  \w", body, re.M)  # the next top-level section
+    body = body[:end.start()] if end else body
+    plan = []
+    for m in re.finditer(r"^    (\w+):.*?\n(.*?)(?=^    \w+:|^  \w)", body, re.S | re.M):
+        duration = float(re.search(r"Duration \(s\): ([0-9.eE+-]+)", m.group(2)).group(1))
+        interval = re.search(r"Output Interval \(s\): ([0-9.eE+-]+)", m.group(2))
+        plan.append((m.group(1), duration, float(interval.group(1)) if interval else 0.0))
+    return plan
+
+
+def stage_ends(plan, times):
+    """End time of every stage: a stage that may stop early (quasi-static, Relaxation) ends at
+    the first output after its start; the others run their duration."""
+    ends, start = [], 0.0
+    for name, duration, _ in plan:
+        if name.startswith(("settle", "drained")):
+            later = times[times > start + 1e-9]
+            end = later[0]
+        else:
+            end = start + duration
+        ends.append(end)
+        start = end
+    return ends
+
+
+def face_angle(x, y, low=0.5, high=5.0):
+    """Mean inclination (deg) of the slope face between heights low and high: the
+    outermost point of every 0.25 m band of height, a line x(y) fitted through them."""
+    bands = np.arange(low, high, 0.25)
+    xs, ys = [], []
+    for b in bands:
+        inside = (y >= b) & (y < b + 0.25)
+        if inside.any():
+            xs.append(x[inside].max())
+            ys.append(b + 0.125)
+    slope = np.polyfit(ys, xs, 1)[0]  # dx/dy
+    return math.degrees(math.atan2(1.0, -slope)) if slope < 0 else float("nan")
+
+
+def report_whole_test(results, name, deck):
+    """The whole-test decks: F and the largest displacement at the end of every stage, the
+    face angle, the drawdown's run-out; returns what the figure needs."""
+    directory = os.path.join(results, name)
+    if not os.path.exists(os.path.join(directory, name + "_points.e")):
+        return None
+    fs = read_csv(os.path.join(directory, name + "_factor_of_safety.csv"))
+    times, x0, y0, displacement = point_displacements(
+        os.path.join(directory, name + "_points.e"))
+    plan = stage_plan(deck)
+    ends = stage_ends(plan, times)
+    print(f"\n{name}: stage, end time, F (Bishop, critical circle), largest |u| of a point "
+          f"since the start, face angle (0.5-5 m high)")
+    rows = []
+    for (stage, _, _), end in zip(plan, ends):
+        k = int(np.argmin(np.abs(times - end)))
+        j = int(np.argmin(np.abs(fs["time"] - end)))
+        ux, uy = displacement[k]
+        u = np.hypot(ux, uy)
+        angle = face_angle(x0 + ux, y0 + uy)
+        rows.append((stage, times[k], fs["factor_of_safety"][j], u.max(), angle))
+        print(f"  {stage:12s} {times[k]:10.1f} s  F {fs['factor_of_safety'][j]:6.3f}  "
+              f"|u|max {u.max():7.4f} m  face {angle:5.1f} deg")
+    ux, uy = displacement[-1]
+    u = np.hypot(ux, uy)
+    x, y = x0 + ux, y0 + uy
+    start = ends[-2]
+    k0 = int(np.argmin(np.abs(times - start)))
+    du = np.hypot(ux - displacement[k0][0], uy - displacement[k0][1])
+    print(f"  drawdown: largest |u| since its start {du.max():.3f} m; the farthest point at "
+          f"y < 0.5 m at x = {x[y < 0.5].max():.2f} m (toe 11.0 m); points that moved > 0.1 m "
+          f"in it: {(du > 0.1).sum()} of {len(du)}")
+    return dict(name=name, fs=fs, rows=rows, x=x, y=y, u=u, directory=directory,
+                drawdown_start=start)
+
+
+def plot_whole_test(runs, path):
+    runs = [r for r in runs if r]
+    if not runs:
+        return
+    fig, axes = plt.subplots(len(runs), 3, figsize=(15, 3.6 * len(runs)), squeeze=False,
+                             width_ratios=[1, 1, 1.5])
+    for row, run in zip(axes, runs):
+        fs = run["fs"]
+        # up to the drawdown: once the slope moves, a circle's F is no margin
+        before = fs["time"] <= run["drawdown_start"] + 1e-9
+        row[0].plot(fs["time"][before] / 3600.0, fs["factor_of_safety"][before], "C0.-", ms=2)
+        row[0].axhline(1.0, color="k", lw=0.6)
+        row[0].set_xlabel("time (h), rise and drained equilibria")
+        row[0].set_ylabel("F (Bishop)")
+        row[0].set_title(run["name"], fontsize=9)
+        row[0].grid(alpha=0.3)
+        for probe, colour in (("crest_edge", "C0"), ("mid_slope", "C1"), ("toe", "C2")):
+            pr = read_csv(os.path.join(run["directory"], f"{run['name']}_probe_{probe}.csv"))
+            if pr:
+                after = pr["time"] >= run["drawdown_start"] - 1e-9
+                t = pr["time"][after] - run["drawdown_start"]
+                ux = pr["displacement_x"][after] - pr["displacement_x"][after][0]
+                uy = pr["displacement_y"][after] - pr["displacement_y"][after][0]
+                row[1].plot(t, np.hypot(ux, uy), color=colour, label=probe)
+        row[1].axvspan(0.0, 1.0, color="0.85", label="level 6 -> 3 m")
+        row[1].set_xlabel("time since the drawdown started (s, mass-scaled)")
+        row[1].set_ylabel("|u| in the drawdown (m)")
+        row[1].grid(alpha=0.3)
+        row[1].legend(fontsize=8)
+        image = row[2].scatter(run["x"], run["y"], c=run["u"], s=2.0, lw=0, cmap="viridis",
+                               rasterized=True)
+        row[2].plot(*zip(*SURFACE), "k--", lw=0.8)
+        row[2].set_aspect("equal")
+        row[2].set_xlim(0, 15)
+        row[2].set_ylim(0, 6.5)
+        row[2].set_title("end of the drawdown, |u| since the start; dashed: initial surface",
+                         fontsize=9)
+        fig.colorbar(image, ax=row[2], label="|u| (m)", shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "results"))
     args = parser.parse_args()
     runs = load(args.results)
-    if not runs:
+    whole = [report_whole_test(args.results, name, os.path.join(HERE, name + ".yaml"))
+             for name in ("experimental_slope", "experimental_slope_slow")]
+    if not runs and not any(whole):
         raise SystemExit(f"no runs of the experimental slope under {args.results}")
     for r in runs:
         report(r)
-    plot_factor(runs, os.path.join(HERE, "experimental_slope_factor_of_safety.png"))
-    plot_circles(runs, os.path.join(HERE, "experimental_slope_critical_circle.png"))
+    if runs:
+        plot_factor(runs, os.path.join(HERE, "experimental_slope_factor_of_safety.png"))
+        plot_circles(runs, os.path.join(HERE, "experimental_slope_critical_circle.png"))
     plot_drawdown(args.results, os.path.join(HERE, "experimental_slope_drawdown.png"))
+    plot_whole_test(whole, os.path.join(HERE, "experimental_slope_whole_test.png"))
 
 
 if __name__ == "__main__":
