@@ -224,22 +224,32 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 Kokkos::View<const unsigned*, MemSpace> constraints) {
   const bool has_locks = constraints.extent(0) > 0;
   const auto node = corrections.node;
+  const auto kind = corrections.kind;
   const auto applied = corrections.applied;
+  const auto normal_j = corrections.normal;
+  const auto wet_i = fields.wet_volume_i;
   const FluxCorrectionList list = corrections;
   const BoundaryGradientFields f = fields;
   const GridFields g = grid;
   Kokkos::parallel_for(
       "correct_hydraulic_velocities", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
       KOKKOS_LAMBDA(const int j) {
-        if (!applied(j)) return;
         const int i = node(j);
+        if (!applied(j)) {  // the same preconditions as on the accelerations
+          const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
+          if (!(n_liquid > 0) || (normal_j(j, 0) == 0 && normal_j(j, 1) == 0)) return;
+        }
         Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
         for (int d = 0; d < kDim; ++d) {
           vl[d] = g.velocity_liquid_i(i, d);
           vs[d] = g.velocity_solid_i(i, d);
         }
-        nodeCorrection(list, j, i, f, g, liquid_density, solid_moves,
-                       has_locks ? constraints(j) : 0u, vl, vs, dvl, dvs);
+        const Real q_net = nodeCorrection(list, j, i, f, g, liquid_density, solid_moves,
+                                          has_locks ? constraints(j) : 0u, vl, vs, dvl, dvs);
+        // A node the prediction left at p = 0 (outflow, or a saturated surface) is corrected
+        // when the REMAPPED velocities, which the mass balance uses, take in more than the
+        // condition allows: otherwise a seepage face passes every inflow the remap brings.
+        if (!applied(j) && !correctionApplies(kind(j), q_net)) return;
         for (int d = 0; d < kDim; ++d) {
           g.velocity_liquid_i(i, d) += dvl[d];
           g.velocity_solid_i(i, d) += dvs[d];
