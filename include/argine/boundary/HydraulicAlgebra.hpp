@@ -124,7 +124,8 @@ inline void headSideForces(const Real xa[kDim], const Real xb[kDim], Real length
 /// instead, only dw_d / (1 + m_L / m_S) of it would survive, and a seepage face on a roller
 /// (the river's face on the levee's axis, normal along the fixed x) would pass the fraction
 /// (m_L / m_S) / (1 + m_L / m_S) (0.2 at n = 0.4, more as the points swell) of every inflow it
-/// is meant to stop: the crest of levee_rainfall swelled from n = 0.40 to 0.50 on it.
+/// is meant to stop: in levee_rainfall the points beside the axis under the crest took that
+/// water in and swelled from n = 0.40 to up to 0.63.
 /// Returns q_net.
 KOKKOS_INLINE_FUNCTION Real correctionOfMeasuredFlux(Real fraction, Real measured, Real mass_liquid,
                                                      Real mass_solid, bool solid_moves,
