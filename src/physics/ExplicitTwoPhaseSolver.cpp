@@ -324,8 +324,11 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     const auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), corrections.node);
     auto locks = Kokkos::create_mirror_view(correction_locks_);
     const NodalConstraints& constraints = boundaries_.constraints();
+    // impermeable locks (the correction leaves them alone) and solid fixities (there the
+    // liquid takes all of the correction: the fixity re-applied below would undo a solid share)
     for (int j = 0; j < corrections.count(); ++j)
-      locks(j) = constraints.flagsOf(node(j)) & (kLiquidLockedX | kLiquidLockedY);
+      locks(j) = constraints.flagsOf(node(j)) &
+                 (kLiquidLockedX | kLiquidLockedY | kSolidFixedX | kSolidFixedY);
     Kokkos::deep_copy(correction_locks_, locks);
     // The energy scale's loads: the largest sum of load magnitudes so far, the hydraulic
     // loads counted in the directions the solid may move (the river's pressure on a fixed

@@ -160,21 +160,22 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {
 namespace {
 
 /// The correction at node i of entry j: the flux-weight form, or the thesis form where the
-/// flux weight has no component in the directions the locks leave free. Returns q_net.
+/// flux weight has no component in the directions the locks leave free; `constraints` the
+/// node's NodalConstraintBits (locks and fixities). Returns q_net.
 KOKKOS_INLINE_FUNCTION Real nodeCorrection(const FluxCorrectionList& c, int j, int i,
                                            const BoundaryGradientFields& fields,
                                            const GridFields& g, Real density, bool solid_moves,
-                                           unsigned liquid_locked, const Real vl[kDim],
+                                           unsigned constraints, const Real vl[kDim],
                                            const Real vs[kDim], Real dvl[kDim], Real dvs[kDim]) {
   const Real normal[kDim] = {c.normal(j, 0), c.normal(j, 1)};
   const Real weight[kDim] = {fields.flux_weight_i(i, 0), fields.flux_weight_i(i, 1)};
   Real q_net = 0;
   if (fluxWeightCorrection(weight, density, c.face_length(j), g.mass_liquid_i(i), g.mass_solid_i(i),
-                           solid_moves, liquid_locked, vl, vs, c.q_out(j), dvl, dvs, q_net))
+                           solid_moves, constraints, vl, vs, c.q_out(j), dvl, dvs, q_net))
     return q_net;
   const Real n_liquid = nodalLiquidFraction(fields.wet_volume_i(i), g.volume_liquid_i(i));
   return relativeFluxCorrection(n_liquid, g.mass_liquid_i(i), g.mass_solid_i(i), solid_moves,
-                                normal, vl, vs, c.q_out(j), dvl, dvs);
+                                normal, vl, vs, c.q_out(j), dvl, dvs, constraints);
 }
 
 }  // namespace
@@ -182,8 +183,8 @@ KOKKOS_INLINE_FUNCTION Real nodeCorrection(const FluxCorrectionList& c, int j, i
 void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
                                    const BoundaryGradientFields& fields, Real dt, bool solid_moves,
                                    Real liquid_density, GridFields& grid,
-                                   Kokkos::View<const unsigned*, MemSpace> liquid_locked) {
-  const bool has_locks = liquid_locked.extent(0) > 0;
+                                   Kokkos::View<const unsigned*, MemSpace> constraints) {
+  const bool has_locks = constraints.extent(0) > 0;
   const auto node = corrections.node;
   const auto kind = corrections.kind;
   const auto applied = corrections.applied;
@@ -205,7 +206,7 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
           vl[d] = g.velocity_liquid_i(i, d) + dt * g.acceleration_liquid_i(i, d);
           vs[d] = g.velocity_solid_i(i, d) + dt * g.acceleration_solid_i(i, d);
         }
-        const unsigned locks = has_locks ? liquid_locked(j) : 0u;
+        const unsigned locks = has_locks ? constraints(j) : 0u;
         const Real q_net =
             nodeCorrection(list, j, i, f, g, liquid_density, solid_moves, locks, vl, vs, dvl, dvs);
         if (!correctionApplies(kind(j), q_net)) return;  // step 3: the switch
@@ -220,25 +221,35 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
 void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 const BoundaryGradientFields& fields, bool solid_moves,
                                 Real liquid_density, GridFields& grid,
-                                Kokkos::View<const unsigned*, MemSpace> liquid_locked) {
-  const bool has_locks = liquid_locked.extent(0) > 0;
+                                Kokkos::View<const unsigned*, MemSpace> constraints) {
+  const bool has_locks = constraints.extent(0) > 0;
   const auto node = corrections.node;
+  const auto kind = corrections.kind;
   const auto applied = corrections.applied;
+  const auto normal_j = corrections.normal;
+  const auto wet_i = fields.wet_volume_i;
   const FluxCorrectionList list = corrections;
   const BoundaryGradientFields f = fields;
   const GridFields g = grid;
   Kokkos::parallel_for(
       "correct_hydraulic_velocities", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
       KOKKOS_LAMBDA(const int j) {
-        if (!applied(j)) return;
         const int i = node(j);
+        if (!applied(j)) {  // the same preconditions as on the accelerations
+          const Real n_liquid = nodalLiquidFraction(wet_i(i), g.volume_liquid_i(i));
+          if (!(n_liquid > 0) || (normal_j(j, 0) == 0 && normal_j(j, 1) == 0)) return;
+        }
         Real vl[kDim], vs[kDim], dvl[kDim], dvs[kDim];
         for (int d = 0; d < kDim; ++d) {
           vl[d] = g.velocity_liquid_i(i, d);
           vs[d] = g.velocity_solid_i(i, d);
         }
-        nodeCorrection(list, j, i, f, g, liquid_density, solid_moves,
-                       has_locks ? liquid_locked(j) : 0u, vl, vs, dvl, dvs);
+        const Real q_net = nodeCorrection(list, j, i, f, g, liquid_density, solid_moves,
+                                          has_locks ? constraints(j) : 0u, vl, vs, dvl, dvs);
+        // A node the prediction left at p = 0 (outflow, or a saturated surface) is corrected
+        // when the REMAPPED velocities, which the mass balance uses, take in more than the
+        // condition allows: otherwise a seepage face passes every inflow the remap brings.
+        if (!applied(j) && !correctionApplies(kind(j), q_net)) return;
         for (int d = 0; d < kDim; ++d) {
           g.velocity_liquid_i(i, d) += dvl[d];
           g.velocity_solid_i(i, d) += dvs[d];

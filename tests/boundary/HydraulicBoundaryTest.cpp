@@ -590,6 +590,39 @@ TEST(FluxWeightCorrection, SetsTheNodeFluxAlongTheFluxWeightByHand) {
       fluxWeightCorrection(none, 1000, 0.5, 2, 8, true, 0u, vl, vs, 1e-3, dvl, dvs, q_net));
 }
 
+TEST(FluxWeightCorrection, WhereTheSolidIsFixedTheLiquidTakesTheWholeCorrection) {
+  // A seepage face on a roller (normal and fixity along x; the river's face on the levee's
+  // axis): G = (-5, 0), rho_L |S| = 1000 x 0.1: per length 0.01; v_S~ = 0 (fixed), v_L~ =
+  // (0.002, 0): measured = -1e-4, an inflow; q_out = 0 -> q_net = -1e-4; fraction 0.05.
+  // m_L / m_S = 0.25. The fixity re-applied after the correction zeroes dv_S,x, so the liquid
+  // must take all of dw = 2e-3 (4.56): dv_L,x = -0.002, dv_S,x = 0. Split as in 4.59 (the
+  // code up to this test) dv_L,x = -0.0016 and the face passed 0.25 / 1.25 = 20 % of the
+  // inflow it is meant to stop.
+  const Real weight[kDim] = {-5, 0}, vl[kDim] = {0.002, 0}, vs[kDim] = {0, 0};
+  Real dvl[kDim], dvs[kDim], q_net = 0;
+  ASSERT_TRUE(fluxWeightCorrection(weight, 1000, 0.1, 2, 8, true, solidFixedBit(0), vl, vs, 0.0,
+                                   dvl, dvs, q_net));
+  EXPECT_NEAR(q_net, -1e-4, 1e-18);
+  EXPECT_NEAR(dvl[0], -0.002, 1e-17);
+  EXPECT_EQ(dvs[0], 0.0);
+  const Real fixed_vs = 0;  // the fixity: v_S,x = 0 whatever the correction asked
+  EXPECT_NEAR((vl[0] + dvl[0] - fixed_vs) * weight[0] * 0.01, 0.0, 1e-18);  // closed
+  // A fixity across the correction direction changes nothing (y fixed, G along x): 4.59.
+  ASSERT_TRUE(fluxWeightCorrection(weight, 1000, 0.1, 2, 8, true, solidFixedBit(1), vl, vs, 0.0,
+                                   dvl, dvs, q_net));
+  EXPECT_NEAR(dvl[0], -0.0016, 1e-17);
+  EXPECT_NEAR(dvs[0], 0.0004, 1e-17);
+  // The thesis form (G = 0) shares it the same way: infiltration 1e-3 m/s into a top face on
+  // a node fixed in y, n_L = 0.4: dv_L,y = -q_net / n_L, dv_S,y = 0.
+  const Real n[kDim] = {0, 1}, wl[kDim] = {0, -0.01}, ws[kDim] = {0, 0};
+  const Real q =
+      relativeFluxCorrection(0.4, 2, 8, true, n, wl, ws, -1e-3, dvl, dvs, solidFixedBit(1));
+  EXPECT_NEAR(q, -3e-3, 1e-17);
+  EXPECT_NEAR(dvl[1], 0.0075, 1e-16);
+  EXPECT_EQ(dvs[1], 0.0);
+  EXPECT_NEAR(0.4 * (wl[1] + dvl[1]), -1e-3, 1e-17);
+}
+
 TEST(FluxWeightCorrection, ASeepageFaceNeverChangesTheRelativeVelocityByMoreThanItself) {
   // q_out = 0: the change of w = v_L - v_S is -(w . e) e, at most |w| whatever the angle
   // between G and the face (the levee drawdown crack: G nearly along the face gave ~1000 m/s

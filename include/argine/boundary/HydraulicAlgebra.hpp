@@ -112,20 +112,34 @@ inline void headSideForces(const Real xa[kDim], const Real xb[kDim], Real length
 /// per unit face length (m/s) and `fraction` its derivative along the normal,
 /// d measured / d(w . n) (the liquid volume fraction n_L in the thesis form),
 ///   q_net = measured - q_out                                                (4.53)
-///   dv_L  = -q_net n / (fraction (1 + m_L / m_S)),  dv_S = -m_L dv_L / m_S   (4.59, 4.58)
+///   dw    = -q_net n / fraction   (the relative velocity w = v_L - v_S that passes q_out)
+///   dv_L  = dw / (1 + m_L / m_S),  dv_S = -m_L dv_L / m_S                    (4.59, 4.58)
 /// so that the measured flux is q_out afterwards and the mixture momentum m_S v_S + m_L v_L is
-/// unchanged. `solid_moves` false (fixed skeleton): dv_S = 0 and dv_L = -q_net n / fraction
-/// (4.56). Returns q_net.
+/// unchanged. `solid_moves` false (fixed skeleton): dv_S = 0 and dv_L = dw (4.56).
+///
+/// `constraints` (NodalConstraintBits of the node): in a direction d where the solid is fixed
+/// (kSolidFixedX/Y) the fixity, applied after the correction, removes dv_S,d again; there the
+/// liquid takes the whole relative change, dv_L,d = dw_d and dv_S,d = 0, as on a fixed skeleton
+/// (4.56), and the fixity's reaction takes the solid's share of the momentum. Split as in 4.59
+/// instead, only dw_d / (1 + m_L / m_S) of it would survive, and a seepage face on a roller
+/// (the river's face on the levee's axis, normal along the fixed x) would pass the fraction
+/// (m_L / m_S) / (1 + m_L / m_S) (0.2 at n = 0.4, more as the points swell) of every inflow it
+/// is meant to stop: in levee_rainfall the points beside the axis under the crest took that
+/// water in and swelled from n = 0.40 to up to 0.63.
+/// Returns q_net.
 KOKKOS_INLINE_FUNCTION Real correctionOfMeasuredFlux(Real fraction, Real measured, Real mass_liquid,
                                                      Real mass_solid, bool solid_moves,
                                                      const Real normal[kDim], Real q_out,
-                                                     Real dv_liquid[kDim], Real dv_solid[kDim]) {
+                                                     Real dv_liquid[kDim], Real dv_solid[kDim],
+                                                     unsigned constraints = 0u) {
   const Real q_net = measured - q_out;  // 4.53
   const Real ratio = solid_moves && mass_solid > 0 ? mass_liquid / mass_solid : Real(0);
   const Real scale = -q_net / (fraction * (1 + ratio));  // 4.59
+  const Real fixed_scale = -q_net / fraction;            // 4.56: all of dw in the liquid
   for (int d = 0; d < kDim; ++d) {
-    dv_liquid[d] = scale * normal[d];
-    dv_solid[d] = -ratio * dv_liquid[d];  // 4.58
+    const bool fixed = (constraints & solidFixedBit(d)) != 0;
+    dv_liquid[d] = (fixed ? fixed_scale : scale) * normal[d];
+    dv_solid[d] = fixed ? Real(0) : -ratio * dv_liquid[d];  // 4.58
   }
   return q_net;
 }
@@ -137,11 +151,12 @@ KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liqu
                                                    bool solid_moves, const Real normal[kDim],
                                                    const Real velocity_liquid[kDim],
                                                    const Real velocity_solid[kDim], Real q_out,
-                                                   Real dv_liquid[kDim], Real dv_solid[kDim]) {
+                                                   Real dv_liquid[kDim], Real dv_solid[kDim],
+                                                   unsigned constraints = 0u) {
   Real relative = 0;
   for (int d = 0; d < kDim; ++d) relative += (velocity_liquid[d] - velocity_solid[d]) * normal[d];
   return correctionOfMeasuredFlux(n_liquid, n_liquid * relative, mass_liquid, mass_solid,
-                                  solid_moves, normal, q_out, dv_liquid, dv_solid);
+                                  solid_moves, normal, q_out, dv_liquid, dv_solid, constraints);
 }
 
 /// The flux-weight form used by the solver: the node's outward liquid volume flux as the
@@ -153,8 +168,9 @@ KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liqu
 /// elements (a deforming body: G_i is then not n_L rho_L S_i).
 ///
 /// The correction acts along e = G_f / |G_f|, G_f = G_i without its components in the
-/// directions where the liquid is locked to the solid (`liquid_locked`, NodalConstraintBits:
-/// an impermeable lock, applied after the correction, would remove them again), with
+/// directions where the liquid is locked to the solid (`constraints`, the node's
+/// NodalConstraintBits: an impermeable lock, applied after the correction, would remove them
+/// again; its solid fixities decide how dw is shared, correctionOfMeasuredFlux), with
 ///   fraction = e . G_i / (rho_L |S_i|) = |G_f| / (rho_L |S_i|).
 /// w . G_i = q_out is a linear constraint on the relative velocity; its gradient is G_i, and
 /// the correction along it (within the free directions) is the smallest change of w that
@@ -169,14 +185,14 @@ KOKKOS_INLINE_FUNCTION Real relativeFluxCorrection(Real n_liquid, Real mass_liqu
 /// directions): the caller uses the thesis form.
 KOKKOS_INLINE_FUNCTION bool fluxWeightCorrection(
     const Real weight[kDim], Real density, Real face_length, Real mass_liquid, Real mass_solid,
-    bool solid_moves, unsigned liquid_locked, const Real velocity_liquid[kDim],
+    bool solid_moves, unsigned constraints, const Real velocity_liquid[kDim],
     const Real velocity_solid[kDim], Real q_out, Real dv_liquid[kDim], Real dv_solid[kDim],
     Real& q_net) {
   if (!(face_length > 0)) return false;
   const Real per_length = 1 / (density * face_length);
   Real direction[kDim], length2 = 0, measured = 0;
   for (int d = 0; d < kDim; ++d) {
-    direction[d] = (liquid_locked & liquidLockedBit(d)) ? Real(0) : weight[d];
+    direction[d] = (constraints & liquidLockedBit(d)) ? Real(0) : weight[d];
     length2 += direction[d] * direction[d];
     measured += (velocity_liquid[d] - velocity_solid[d]) * weight[d] * per_length;
   }
@@ -185,7 +201,7 @@ KOKKOS_INLINE_FUNCTION bool fluxWeightCorrection(
   for (int d = 0; d < kDim; ++d) direction[d] /= length;
   const Real fraction = length * per_length;  // e . G_i / (rho_L |S_i|)
   q_net = correctionOfMeasuredFlux(fraction, measured, mass_liquid, mass_solid, solid_moves,
-                                   direction, q_out, dv_liquid, dv_solid);
+                                   direction, q_out, dv_liquid, dv_solid, constraints);
   return true;
 }
 

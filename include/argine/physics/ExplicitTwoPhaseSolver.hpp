@@ -314,8 +314,9 @@ class ExplicitTwoPhaseSolver {
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
-  /// Per entry of hydraulic_.corrections(): the node's impermeable-lock bits (the flux
-  /// correction acts in the free directions only), refreshed with each plan.
+  /// Per entry of hydraulic_.corrections(): the node's impermeable-lock and solid-fixity bits
+  /// (the flux correction acts in the unlocked directions only, and through the liquid alone
+  /// where the solid is fixed), refreshed with each plan.
   Kokkos::View<unsigned*, MemSpace> correction_locks_;
   /// 1 at the nodes the current plan's hydraulic conditions act on (loads, corrections): a
   /// point touching one is not alone for the liquid (interpolateVelocityGradients).

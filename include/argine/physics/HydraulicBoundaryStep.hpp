@@ -95,19 +95,21 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid);
 /// The node's flux is measured with its flux weight G_i (fluxWeightCorrection), so that the
 /// liquid the point mass balance lets through the node is exactly the prescribed one;
 /// `liquid_density` (kg/m^3) is the reference rho_L that converts G_i to volumes.
-/// `liquid_locked` (optional): per entry of `corrections`, the node's impermeable-lock bits
-/// (NodalConstraintBits); the correction leaves those directions alone (fluxWeightCorrection).
+/// `constraints` (optional): per entry of `corrections`, the node's NodalConstraintBits: the
+/// correction leaves the impermeable-locked directions alone (fluxWeightCorrection) and puts
+/// all of the relative change into the liquid where the solid is fixed
+/// (correctionOfMeasuredFlux; the fixity applied afterwards would undo a solid share).
 void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
                                    const BoundaryGradientFields& fields, Real dt, bool solid_moves,
                                    Real liquid_density, GridFields& grid,
-                                   Kokkos::View<const unsigned*, MemSpace> liquid_locked = {});
+                                   Kokkos::View<const unsigned*, MemSpace> constraints = {});
 
 /// Re-imposes the applied corrections on the remapped nodal velocities v^{k+1}, so the
-/// relative flux used by the mass balance is the prescribed one.
+/// relative flux used by the mass balance is the prescribed one (`constraints` as above).
 void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 const BoundaryGradientFields& fields, bool solid_moves,
                                 Real liquid_density, GridFields& grid,
-                                Kokkos::View<const unsigned*, MemSpace> liquid_locked = {});
+                                Kokkos::View<const unsigned*, MemSpace> constraints = {});
 
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
