@@ -42,6 +42,35 @@ Kokkos::View<Real* [kDim], MemSpace>::HostMirror normalsOf(const Mesh& mesh,
   return gradient;
 }
 
+/// One wet node for the correction kernels: M_S = 6, M_L = 2, liquid volume 1 and wet volume
+/// 0.4 (n_L = 0.4).
+void setOneWetNode(GridFields& grid, BoundaryGradientFields& fields) {
+  grid.allocate(1);
+  fields.allocate(1);
+  Kokkos::deep_copy(grid.mass_solid_i, 6.0);
+  Kokkos::deep_copy(grid.mass_liquid_i, 2.0);
+  Kokkos::deep_copy(grid.volume_liquid_i, 1.0);
+  Kokkos::deep_copy(fields.wet_volume_i, 0.4);
+}
+
+/// A correction list of one entry at node 0: face length 1 (G_i = 0 here, so the thesis
+/// form with n_L applies) and outward normal (0, 1); kind and q_out left to the test.
+FluxCorrectionList oneUpwardEntry() {
+  FluxCorrectionList list;
+  list.node = Kokkos::View<int*, MemSpace>("node", 1);
+  list.kind = Kokkos::View<int*, MemSpace>("kind", 1);
+  list.q_out = Kokkos::View<Real*, MemSpace>("q", 1);
+  list.applied = Kokkos::View<int*, MemSpace>("applied", 1);
+  list.face_length = Kokkos::View<Real*, MemSpace>("face_length", 1);
+  Kokkos::deep_copy(list.face_length, 1.0);
+  list.normal = Kokkos::View<Real* [kDim], MemSpace>("normal", 1);
+  auto normal = Kokkos::create_mirror_view(list.normal);
+  normal(0, 0) = 0;
+  normal(0, 1) = 1;
+  Kokkos::deep_copy(list.normal, normal);
+  return list;
+}
+
 TEST(MassGradientNormal, SquareBlockPointsOutward) {
   // 4 x 4 quads of 1 m, soil in the middle 2 x 2 cells ([1, 3]^2). By symmetry the top-
   // middle node (2, 3) has n = (0, 1), the left-middle (1, 2) n = (-1, 0), the corner (3, 3)
@@ -217,14 +246,9 @@ TEST(HydraulicStep, CorrectionKernelKeepsTheMixtureMomentum) {
   // n_L w~ . n = -0.004 with n = (0, 1); rain 1e-3 m/s with ponding (q_out = -1e-3):
   // q_net = -0.003, dv_L = 0.003 / (0.4 x 4/3) = 0.005625, dv_S = -dv_L / 3 (4.58, 4.59).
   GridFields grid;
-  grid.allocate(1);
   BoundaryGradientFields fields;
-  fields.allocate(1);
+  setOneWetNode(grid, fields);
   auto set = [](auto view, auto value) { Kokkos::deep_copy(view, value); };
-  set(grid.mass_solid_i, 6.0);
-  set(grid.mass_liquid_i, 2.0);
-  set(grid.volume_liquid_i, 1.0);
-  set(fields.wet_volume_i, 0.4);
   auto al = Kokkos::create_mirror_view(grid.acceleration_liquid_i);
   auto as = Kokkos::create_mirror_view(grid.acceleration_solid_i);
   al(0, 0) = as(0, 0) = 0;
@@ -232,20 +256,9 @@ TEST(HydraulicStep, CorrectionKernelKeepsTheMixtureMomentum) {
   as(0, 1) = -10;
   Kokkos::deep_copy(grid.acceleration_liquid_i, al);
   Kokkos::deep_copy(grid.acceleration_solid_i, as);
-  FluxCorrectionList list;
-  list.node = Kokkos::View<int*, MemSpace>("node", 1);
-  list.kind = Kokkos::View<int*, MemSpace>("kind", 1);
-  list.q_out = Kokkos::View<Real*, MemSpace>("q", 1);
-  list.applied = Kokkos::View<int*, MemSpace>("applied", 1);
-  list.face_length = Kokkos::View<Real*, MemSpace>("face_length", 1);
-  set(list.face_length, 1.0);  // G_i = 0 here: the thesis form (n_L) applies
-  list.normal = Kokkos::View<Real* [kDim], MemSpace>("normal", 1);
+  FluxCorrectionList list = oneUpwardEntry();
   set(list.kind, static_cast<int>(FluxCorrection::InfiltrationPonding));
   set(list.q_out, -1e-3);
-  auto normal = Kokkos::create_mirror_view(list.normal);
-  normal(0, 0) = 0;
-  normal(0, 1) = 1;
-  Kokkos::deep_copy(list.normal, normal);
   const Real dt = 1e-3;
   correctHydraulicAccelerations(list, fields, dt, true, 1000.0, grid);
   const auto al1 = hostCopy(grid.acceleration_liquid_i), as1 = hostCopy(grid.acceleration_solid_i);
@@ -281,26 +294,10 @@ TEST(HydraulicStep, TheRemappedVelocitiesAreCheckedAgainstTheCondition) {
   // it), a seepage face passed every such inflow: in levee_rainfall the river's face took in
   // 0.0021 m^3/m more by 8 s, and the crest swelled.
   GridFields grid;
-  grid.allocate(1);
   BoundaryGradientFields fields;
-  fields.allocate(1);
+  setOneWetNode(grid, fields);
   auto set = [](auto view, auto value) { Kokkos::deep_copy(view, value); };
-  set(grid.mass_solid_i, 6.0);
-  set(grid.mass_liquid_i, 2.0);
-  set(grid.volume_liquid_i, 1.0);
-  set(fields.wet_volume_i, 0.4);
-  FluxCorrectionList list;
-  list.node = Kokkos::View<int*, MemSpace>("node", 1);
-  list.kind = Kokkos::View<int*, MemSpace>("kind", 1);
-  list.q_out = Kokkos::View<Real*, MemSpace>("q", 1);
-  list.applied = Kokkos::View<int*, MemSpace>("applied", 1);
-  list.face_length = Kokkos::View<Real*, MemSpace>("face_length", 1);
-  set(list.face_length, 1.0);
-  list.normal = Kokkos::View<Real* [kDim], MemSpace>("normal", 1);
-  auto normal = Kokkos::create_mirror_view(list.normal);
-  normal(0, 0) = 0;
-  normal(0, 1) = 1;
-  Kokkos::deep_copy(list.normal, normal);
+  FluxCorrectionList list = oneUpwardEntry();
   // remapped v_L = (0, vy), v_S = 0; the prediction applied nothing
   auto remapped = [&](Real vy, FluxCorrection kind, Real q_out) {
     auto vl = Kokkos::create_mirror_view(grid.velocity_liquid_i);
