@@ -701,15 +701,20 @@ ListSchema stageKeys() {
                 .byDefault(0.0));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
-  stage.add(KeySpec::choice("Velocity Transfer", deckWords(kTransferSchemeWords),
+  Words transfers = deckWords(kTransferSchemeWords);
+  transfers.push_back(kTransferByShapeFunctions);
+  stage.add(KeySpec::choice("Velocity Transfer", transfers,
                             "FLIP: v_p += dt sum N a_i (the thesis, 7.10-7.11), optionally "
                             "blended with PIC; APIC: affine particle-in-cell (Jiang et al. "
                             "2015), v_p and an affine velocity matrix C_p from the grid for both "
                             "phases, conserving angular momentum and leaving no point velocity "
                             "the grid cannot see; TPIC: v_p from the grid, C_p the velocity "
                             "gradient of the remapped field, robust where points barely reach a "
-                            "node (doc/theory.md Sec. 3.11)")
-                .byDefault(std::string("FLIP"))
+                            "node (doc/theory.md Sec. 3.11); by shape functions: APIC on GIMP "
+                            "and B-spline meshes (the scheme for failure stages), FLIP on "
+                            "linear shapes (the thesis; doc/theory.md, 'The scheme for failure "
+                            "stages')")
+                .byDefault(std::string(kTransferByShapeFunctions))
                 .when("Solver", {"explicit", "quasi-static", "fixed skeleton"}));
   stage.add(KeySpec::real("Solid PIC Fraction", "-",
                           "share of the PIC update in the solid point velocities, per step; "
@@ -718,7 +723,7 @@ ListSchema stageKeys() {
                 .atLeast(0)
                 .atMost(1)
                 .byDefault(0.0)
-                .when("Velocity Transfer", {"FLIP"}));
+                .when("Velocity Transfer", {"FLIP", kTransferByShapeFunctions}));
   stage.add(KeySpec::real("Liquid PIC Fraction", "-",
                           "share per step of the grid's relative velocity v_L - v_S in the "
                           "liquid point velocities (PIC for the Darcy part); 0: FLIP (the "
@@ -726,7 +731,7 @@ ListSchema stageKeys() {
                 .atLeast(0)
                 .atMost(1)
                 .byDefault(0.0)
-                .when("Velocity Transfer", {"FLIP"}));
+                .when("Velocity Transfer", {"FLIP", kTransferByShapeFunctions}));
   stage.add(KeySpec::choice("Liquid Drag", Words{"explicit", "implicit"},
                             "explicit: the Darcy drag Q_L (v_L - v_S) at t^k (Eq. 4.36, the "
                             "thesis), which bounds the step by about 2 rho_L k / (n S_L g) "

@@ -432,7 +432,7 @@ MaterialSpec parseMaterial(const DeckSection& material) {
   return spec;
 }
 
-StageSpec parseStage(const DeckSection& stage) {
+StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
   StageSpec spec;
   spec.name = stage.name();
   spec.solver = deckValue(kSolverWords, stage.word("Solver"));
@@ -440,7 +440,18 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.gravity = stage.real("Gravity (m/s2)");
   spec.local_damping = stage.real("Local Damping");
   spec.mass_scaling = stage.real("Mass Scaling");
-  spec.transfer = deckValue(kTransferSchemeWords, stage.word("Velocity Transfer"));
+  const std::string transfer = stage.word("Velocity Transfer");
+  spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)
+                                                        : deckValue(kTransferSchemeWords, transfer);
+  if (spec.transfer != TransferScheme::Flip)
+    for (const char* blend : {"Solid PIC Fraction", "Liquid PIC Fraction"})
+      if (stage.has(blend))
+        throw InputError(stage.pathOf(blend),
+                         std::string("blends a PIC update into FLIP, but this stage's transfer "
+                                     "is ") +
+                             deckWord(kTransferSchemeWords, spec.transfer) + " (the default on " +
+                             deckWord(kShapeFamilyWords, shapes) +
+                             " shape functions); set 'Velocity Transfer: FLIP' or remove the key");
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.hold_liquid_pressure =

@@ -10,8 +10,9 @@ namespace argine::input_detail {
 MeshSpec parseMesh(const DeckSection& mesh);
 /// One entry of `Materials` -> MaterialSpec (degrees -> radians, kappa <-> k_sat).
 MaterialSpec parseMaterial(const DeckSection& material);
-/// One entry of `Stages` -> StageSpec.
-StageSpec parseStage(const DeckSection& stage);
+/// One entry of `Stages` -> StageSpec; `shapes` (the mesh's) decides the transfer a stage
+/// does not name (transferForShapes).
+StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes);
 /// `Output` -> OutputSpec.
 OutputSpec parseOutput(const DeckSection& output);
 

@@ -81,6 +81,9 @@ inline constexpr DeckWord<TransferScheme> kTransferSchemeWords[] = {
     {"APIC", TransferScheme::Apic},
     {"TPIC", TransferScheme::Tpic},
 };
+/// The `Velocity Transfer` word (and default) that leaves the choice to the mesh's shape
+/// functions (transferForShapes).
+inline constexpr const char* kTransferByShapeFunctions = "by shape functions";
 
 inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
     {"cfl dry", CriterionKind::CflDry},

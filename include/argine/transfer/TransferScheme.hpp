@@ -4,6 +4,7 @@
 /// `Velocity Transfer`): the thesis' FLIP update, optionally blended with PIC, or APIC.
 
 #include "argine/core/Types.hpp"
+#include "argine/mesh/Mesh.hpp"
 
 namespace argine {
 
@@ -30,6 +31,17 @@ enum class TransferScheme {
   /// velocity gradient at the point.
   Tpic,
 };
+
+/// The transfer a stage takes when its deck does not name one (`Velocity Transfer: by shape
+/// functions`, the default): APIC on the grid families, the scheme for failure stages chosen
+/// from the cell-crossing and granular-collapse charts (doc/theory.md, "The scheme for
+/// failure stages": FLIP's points never come to rest, TPIC is dissipative); FLIP, the
+/// thesis', on linear shapes, where APIC goes unstable at nodes a point barely reaches and
+/// TPIC damps the levee slide itself on the scenes' meshes (doc/verification.md, "Mesh
+/// convergence of the levee run-out").
+constexpr TransferScheme transferForShapes(ShapeFamily shapes) {
+  return shapes == ShapeFamily::Linear ? TransferScheme::Flip : TransferScheme::Apic;
+}
 
 /// Shares of a PIC update in the FLIP point velocity update, per phase, in [0, 1] and per
 /// step; 0 is the thesis' FLIP update (7.10, 7.11). FLIP keeps the part of the point

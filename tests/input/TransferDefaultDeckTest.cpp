@@ -1,0 +1,68 @@
+// The stage key `Velocity Transfer` when a deck does not name it: APIC on the grid families
+// (the scheme for failure stages, doc/theory.md), FLIP on linear shapes (the thesis); and
+// the PIC fractions, which blend FLIP only.
+#include "DeckTestSupport.hpp"
+#include "argine/transfer/TransferScheme.hpp"
+
+namespace argine::test {
+
+namespace {
+
+std::string withShapes(const std::string& deck, const std::string& shapes) {
+  return replaced(deck, "  Mesh:\n", "  Mesh:\n    Shape Functions: " + shapes + "\n");
+}
+
+std::string withStageKey(const std::string& deck, const std::string& line) {
+  return replaced(deck, "      Boundary Conditions:\n",
+                  "      " + line + "\n      Boundary Conditions:\n");
+}
+
+TEST(TransferDefault, FollowsTheShapeFunctions) {
+  EXPECT_EQ(transferForShapes(ShapeFamily::Linear), TransferScheme::Flip);
+  EXPECT_EQ(transferForShapes(ShapeFamily::Gimp), TransferScheme::Apic);
+  EXPECT_EQ(transferForShapes(ShapeFamily::BSpline), TransferScheme::Apic);
+  EXPECT_EQ(parseText(kBaseDeck).stages[0].transfer, TransferScheme::Flip);
+  EXPECT_EQ(parseText(withShapes(kBaseDeck, "GIMP")).stages[0].transfer, TransferScheme::Apic);
+  EXPECT_EQ(parseText(withShapes(kBaseDeck, "B-spline")).stages[0].transfer, TransferScheme::Apic);
+  EXPECT_EQ(parseText(withStageKey(kBaseDeck, "Velocity Transfer: by shape functions"))
+                .stages[0]
+                .transfer,
+            TransferScheme::Flip);
+}
+
+TEST(TransferDefault, ANamedTransferIsKeptOnEveryShapeFamily) {
+  const std::string gimp = withShapes(kBaseDeck, "GIMP");
+  EXPECT_EQ(parseText(withStageKey(gimp, "Velocity Transfer: FLIP")).stages[0].transfer,
+            TransferScheme::Flip);
+  EXPECT_EQ(parseText(withStageKey(gimp, "Velocity Transfer: TPIC")).stages[0].transfer,
+            TransferScheme::Tpic);
+  EXPECT_EQ(parseText(withStageKey(kBaseDeck, "Velocity Transfer: APIC")).stages[0].transfer,
+            TransferScheme::Apic);
+}
+
+TEST(TransferDefault, PicFractionsNeedFlip) {
+  // on linear shapes the default is FLIP: the blend is read
+  const Deck linear = parseText(withStageKey(kBaseDeck, "Solid PIC Fraction: 0.05"));
+  EXPECT_EQ(linear.stages[0].transfer, TransferScheme::Flip);
+  EXPECT_EQ(linear.stages[0].solid_pic_fraction, 0.05);
+  // on GIMP the default is APIC: a blend is an error naming the key, with the remedy
+  const std::string gimp = withShapes(kBaseDeck, "GIMP");
+  expectInputError([&] { parseText(withStageKey(gimp, "Liquid PIC Fraction: 0.1")); },
+                   "Stages/load/Liquid PIC Fraction", "set 'Velocity Transfer: FLIP'");
+  expectInputError([&] { parseText(withStageKey(gimp, "Solid PIC Fraction: 0.1")); },
+                   "Stages/load/Solid PIC Fraction", "APIC (the default on GIMP");
+  const Deck flip = parseText(
+      withStageKey(withStageKey(gimp, "Velocity Transfer: FLIP"), "Liquid PIC Fraction: 0.1"));
+  EXPECT_EQ(flip.stages[0].liquid_pic_fraction, 0.1);
+  // a named non-FLIP transfer with a blend stays the schema's error
+  expectInputError(
+      [&] {
+        parseText(withStageKey(withStageKey(kBaseDeck, "Velocity Transfer: TPIC"),
+                               "Liquid PIC Fraction: 0.1"));
+      },
+      "Stages/load/Liquid PIC Fraction", "Velocity Transfer");
+}
+
+}  // namespace
+
+}  // namespace argine::test
