@@ -6,7 +6,9 @@
 #   scripts/convergence.sh [deck.yaml] [element sizes (m)...]
 #   default: inputs/levee_drawdown/levee_drawdown.yaml at 0.2 and 0.1 m
 # CONVERGENCE_TIMES (s after the event started; default "2 3 20"), CONVERGENCE_START (the
-# simulation time the event starts at; default 1), ARGINE_RANKS (MPI ranks per run).
+# simulation time the event starts at; default 1), CONVERGENCE_LAST_DURATION (s: the last
+# stage's Duration in every copy, e.g. 19 for the first 20 s of levee_rainfall's 100 s;
+# default: the deck's), ARGINE_RANKS (MPI ranks per run).
 # Results in results/convergence/<scene>_h<size>/, the chart in
 # results/convergence/<scene>_convergence.png. A run whose results exist is not repeated
 # (delete its folder to rerun it).
@@ -42,6 +44,10 @@ for h in "${sizes[@]}"; do
   copy=$(dirname "$deck")/.convergence_$name.yaml
   sed -e "s/Element Size (m): [0-9.eE+-]*/Element Size (m): $h/" \
     -e "s/Name: [A-Za-z0-9_]*}/Name: $name}/" "$deck" >"$copy"
+  if [[ -n ${CONVERGENCE_LAST_DURATION:-} ]]; then  # the last stage's Duration (s)
+    last=$(grep -n "Duration (s):" "$copy" | tail -1 | cut -d: -f1)
+    sed -i "${last}s/Duration (s): [0-9.eE+-]*/Duration (s): $CONVERGENCE_LAST_DURATION/" "$copy"
+  fi
   echo "h = $h m: running $deck -> $dir"
   status=0
   "${launcher[@]}" "$build_dir/argine" run "$copy" --output "$dir" >"$dir/$name.log" 2>&1 || status=$?

@@ -20,7 +20,8 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
   mobilised volume   the volume of the points that moved > 10 cm (m^3 per m)
 
 and prints them with the change against the next finer resolution and, with three, the observed
-order p = log2(|q_h - q_h/2| / |q_h/2 - q_h/4|) (for halving). With --figure it charts each
+order p = log(|q_h - q_h/r| / |q_h/r - q_h/r^2|) / log r, the Richardson limit and the finest
+value's error bar (error_bar: Roache's grid convergence index where the changes keep their sign). With --figure it charts each
 quantity at the last time against the wall time of its run, one line per series: the
 coarsest model that is still right is the leftmost point near where the lines end.
 """
@@ -139,23 +140,47 @@ def main():
         print(f"\nwrote {args.figure}")
 
 
+def error_bar(values, ratio):
+    """Observed order, Richardson limit and error bar of the finest of the last three values
+    (coarse to fine, refinement ratio `ratio`): Roache's grid convergence index with safety
+    factor 1.25, GCI = 1.25 |q_1 - q_2| / (r^p - 1), where the changes keep their sign and
+    the observed order lies in [0.5, 4]; otherwise (oscillating or out-of-range order) no limit
+    and, as the error bar, the larger of the last two changes times 1.25 (Roache's safety
+    factor for an assumed rather than observed order is 3; this takes the measured spread)."""
+    if len(values) < 3 or any(math.isnan(v) for v in values[-3:]):
+        return math.nan, math.nan, math.nan
+    q3, q2, q1 = values[-3:]
+    e32, e21 = q2 - q3, q1 - q2
+    if e21 == 0:
+        return math.inf, q1, 0.0
+    if e32 == 0 or e32 * e21 < 0:
+        return math.nan, math.nan, 1.25 * max(abs(e32), abs(e21))
+    order = math.log(abs(e32) / abs(e21)) / math.log(ratio)
+    if not 0.5 <= order <= 4:
+        return order, math.nan, 1.25 * max(abs(e32), abs(e21))
+    limit = q1 + e21 / (ratio**order - 1)
+    return order, limit, 1.25 * abs(e21) / (ratio**order - 1)
+
+
 def table(label, runs, times):
     print(f"\n{label or 'runs'}: element size (m), points, wall time (s)")
     for r in runs:
         print(f"  {r['h']:.3g} m  {r['points']:6d} points  {r['wall']:.0f} s")
+    ratio = runs[-2]["h"] / runs[-1]["h"] if len(runs) >= 2 else 2.0
     for t in times:
         print(f"\n{label} t = {t:g} s after the event started")
         print("| quantity | " + " | ".join(f"h = {r['h']:.3g} m" for r in runs)
-              + " | change h->h/2 | order |")
-        print("|---|" + "---|" * (len(runs) + 2))
+              + " | changes to the next finer | observed order | Richardson limit "
+              "| finest with error bar |")
+        print("|---|" + "---|" * (len(runs) + 4))
         for q in QUANTITIES:
             values = [r["rows"][t][q] if t in r["rows"] else math.nan for r in runs]
             changes = [b - a for a, b in zip(values, values[1:])]
-            order = (math.log2(abs(changes[0]) / abs(changes[1]))
-                     if len(changes) >= 2 and changes[1] != 0 and changes[0] != 0 else math.nan)
+            order, limit, bar = error_bar(values, ratio)
             unit = "m3/m" if q == "mobilised volume" else "m"
             print(f"| {q} ({unit}) | " + " | ".join(f"{v:.3f}" for v in values) + " | "
-                  + ", ".join(f"{c:+.3f}" for c in changes) + f" | {order:.2f} |")
+                  + ", ".join(f"{c:+.3f}" for c in changes) + f" | {order:.2f} | {limit:.3f} | "
+                  + (f"{values[-1]:.3f} ± {bar:.3f}" if not math.isnan(bar) else "-") + " |")
 
 
 if __name__ == "__main__":
