@@ -158,13 +158,20 @@ Outcome runArgine(const std::vector<std::string>& arguments, const fs::path& log
 class Restart : public ::testing::Test {
  protected:
   void SetUp() override {
+    // one folder per test and process: two suites run at once (two build trees, CI beside a
+    // developer's run) must not remove each other's files
     dir_ = fs::path(::testing::TempDir()) /
            ("argine_restart_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     deck_ = dir_ / "column.yaml";
     std::ofstream(deck_) << kDeck;
+  }
+  // kept when the test failed, for a look at the runs' logs
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
   }
   // The uninterrupted run, once per test (it takes a fraction of a second).
   fs::path reference() {
