@@ -18,10 +18,13 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
                      of the lowest point whose displacement is at least half that of the
                      column's top point (m)
   mobilised volume   the volume of the points that moved > 10 cm (m^3 per m)
+  probe |u|          the displacement of the scene's probes MP1-MP3 (DIR/NAME_probe_*.csv, the
+                     material point nearest each probe's position at the start; m)
 
 and prints them with the change against the next finer resolution and, with three, the observed
 order p = log(|q_h - q_h/r| / |q_h/r - q_h/r^2|) / log r, the Richardson limit and the finest
-value's error bar (error_bar: Roache's grid convergence index where the changes keep their sign). With --figure it charts each
+value's error bar (error_bar: Roache's grid convergence index where the changes keep their sign,
+with the order capped at the method's first order). With --figure it charts each
 quantity at the last time against the wall time of its run, one line per series: the
 coarsest model that is still right is the leftmost point near where the lines end.
 """
@@ -36,6 +39,24 @@ import numpy as np
 CREST_Y, TOE_X = 3.0, 6.0  # the levee_drawdown / levee_rainfall geometry (m)
 MOVED = 0.10  # a point has "moved" beyond this displacement (m)
 QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
+PROBES = ("MP1_crest", "MP2_slope", "MP3_toe")  # the scenes' probes (deck Probes/Points)
+
+
+def probe_displacements(directory, name, times):
+    """|u| of each probe (DIR/NAME_probe_<probe>.csv) at the simulation times `times` (the
+    row nearest in time, within 1e-6 s); missing probes or times are left out."""
+    out = {}
+    for probe in PROBES:
+        path = os.path.join(directory, f"{name}_probe_{probe}.csv")
+        if not os.path.exists(path):
+            continue
+        data = np.genfromtxt(path, delimiter=",", names=True)
+        for t in times:
+            k = int(np.argmin(np.abs(data["time"] - t)))
+            if abs(data["time"][k] - t) <= 1e-6:
+                out.setdefault(t, {})[f"probe {probe} |u|"] = float(
+                    np.hypot(data["displacement_x"][k], data["displacement_y"][k]))
+    return out
 
 
 def read_points(path):
@@ -103,6 +124,9 @@ def main():
             if abs(time[k] - (args.start + t)) > 1e-6:
                 continue  # this run did not reach t
             rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
+        probes = probe_displacements(directory, name, [args.start + t for t in rows])
+        for t in rows:
+            rows[t].update(probes.get(args.start + t, {}))
         runs.append({"h": float(h), "points": len(x0), "wall": wall_time(directory, name),
                      "rows": rows, "series": series[0] if series else ""})
     groups = {}
@@ -140,13 +164,15 @@ def main():
         print(f"\nwrote {args.figure}")
 
 
-def error_bar(values, ratio):
+def error_bar(values, ratio, formal_order=1.0):
     """Observed order, Richardson limit and error bar of the finest of the last three values
-    (coarse to fine, refinement ratio `ratio`): Roache's grid convergence index with safety
-    factor 1.25, GCI = 1.25 |q_1 - q_2| / (r^p - 1), where the changes keep their sign and
-    the observed order lies in [0.5, 4]; otherwise (oscillating or out-of-range order) no limit
-    and, as the error bar, the larger of the last two changes times 1.25 (Roache's safety
-    factor for an assumed rather than observed order is 3; this takes the measured spread)."""
+    (coarse to fine, refinement ratio `ratio`). Where the changes keep their sign and the
+    observed order p is at least 0.5: Roache's grid convergence index with safety factor
+    1.25, GCI = 1.25 |q_1 - q_2| / (r^p' - 1), and the limit q_1 + (q_1 - q_2) / (r^p' - 1),
+    with p' = min(p, formal_order): an order above the method's is taken for a coarse mesh
+    outside the asymptotic range, not for a faster convergence (linear-shape MPM with FLIP
+    is at best first order in the displacements). Otherwise (the changes oscillate, or p <
+    0.5) no limit and, as the error bar, 1.25 x the larger of the last two changes."""
     if len(values) < 3 or any(math.isnan(v) for v in values[-3:]):
         return math.nan, math.nan, math.nan
     q3, q2, q1 = values[-3:]
@@ -156,10 +182,10 @@ def error_bar(values, ratio):
     if e32 == 0 or e32 * e21 < 0:
         return math.nan, math.nan, 1.25 * max(abs(e32), abs(e21))
     order = math.log(abs(e32) / abs(e21)) / math.log(ratio)
-    if not 0.5 <= order <= 4:
+    if order < 0.5:
         return order, math.nan, 1.25 * max(abs(e32), abs(e21))
-    limit = q1 + e21 / (ratio**order - 1)
-    return order, limit, 1.25 * abs(e21) / (ratio**order - 1)
+    used = min(order, formal_order)
+    return order, q1 + e21 / (ratio**used - 1), 1.25 * abs(e21) / (ratio**used - 1)
 
 
 def table(label, runs, times):
@@ -173,8 +199,11 @@ def table(label, runs, times):
               + " | changes to the next finer | observed order | Richardson limit "
               "| finest with error bar |")
         print("|---|" + "---|" * (len(runs) + 4))
-        for q in QUANTITIES:
-            values = [r["rows"][t][q] if t in r["rows"] else math.nan for r in runs]
+        probes = [q for q in (f"probe {p} |u|" for p in PROBES)
+                  if any(q in r["rows"].get(t, {}) for r in runs)]
+        for q in list(QUANTITIES) + probes:
+            values = [r["rows"][t].get(q, math.nan) if t in r["rows"] else math.nan
+                      for r in runs]
             changes = [b - a for a, b in zip(values, values[1:])]
             order, limit, bar = error_bar(values, ratio)
             unit = "m3/m" if q == "mobilised volume" else "m"
