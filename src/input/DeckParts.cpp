@@ -439,6 +439,9 @@ StageSpec parseStage(const DeckSection& stage) {
   spec.duration = stage.real("Duration (s)");
   spec.gravity = stage.real("Gravity (m/s2)");
   spec.local_damping = stage.real("Local Damping");
+  spec.local_damping_form = stage.word("Local Damping Form") == "dissipative"
+                                ? LocalDampingForm::Dissipative
+                                : LocalDampingForm::StartOfStep;
   spec.mass_scaling = stage.real("Mass Scaling");
   spec.transfer = deckValue(kTransferSchemeWords, stage.word("Velocity Transfer"));
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
