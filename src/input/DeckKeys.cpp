@@ -699,6 +699,17 @@ ListSchema stageKeys() {
                 .atLeast(0)
                 .below(1)
                 .byDefault(0.0));
+  stage.add(KeySpec::choice("Local Damping Form", Words{"start-of-step", "dissipative"},
+                            "start-of-step: D = -alpha |F| sign(v^k), v^k the nodal velocity "
+                            "at the start of the step (Anura3D's form); adds alpha |F| in the "
+                            "sign-alternating mode of an explicit instability, so a damped "
+                            "stage can be unstable below the criteria's step; dissipative: D = "
+                            "-sign(vbar) min(alpha |F|, m |vbar| / dt), vbar = v^k + dt F / "
+                            "(2m) the step's mean velocity: never adds energy, stable wherever "
+                            "the undamped step is; the same as start-of-step on a node moving "
+                            "steadily (doc/theory.md Sec. 3.5, doc/stability.md)")
+                .byDefault(std::string("start-of-step"))
+                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

@@ -439,6 +439,9 @@ StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
   spec.duration = stage.real("Duration (s)");
   spec.gravity = stage.real("Gravity (m/s2)");
   spec.local_damping = stage.real("Local Damping");
+  spec.local_damping_form = stage.word("Local Damping Form") == "dissipative"
+                                ? LocalDampingForm::Dissipative
+                                : LocalDampingForm::StartOfStep;
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

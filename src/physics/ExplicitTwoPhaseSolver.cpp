@@ -111,6 +111,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
                      "the explicit two-phase solver runs explicit, quasi-static and fixed "
                      "skeleton stages; implicit seepage needs the implicit solver");
   momentum_.local_damping = stage.local_damping;
+  momentum_.local_damping_form = stage.local_damping_form;
   momentum_.mass_scaling = stage.mass_scaling;
   transfer_.scheme = stage.transfer;
   transfer_.blend = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
@@ -241,7 +242,7 @@ void ExplicitTwoPhaseSolver::step(Real dt) {
   });
   timed(StepPhase::NodalSolve, [&] {
     solveLiquidMomentum(dt);                  // step 1 (4.36)
-    solveMixtureMomentum();                   // step 2 (4.37)
+    solveMixtureMomentum(dt);                 // step 2 (4.37)
     applyAccelerationBoundaryConditions(dt);  // fixities, impermeable boundaries, walls
     side_walls_.constrainAccelerations(nodes_in_use_, momentum_, dt, grid_);  // channel walls
     correctHydraulicAccelerations(dt);  // infiltration, seepage face (4.53-4.59)
@@ -390,8 +391,8 @@ void ExplicitTwoPhaseSolver::solveLiquidMomentum(Real dt) {
   argine::solveLiquidMomentum(nodes_in_use_, momentum_, dt, grid_);
 }
 
-void ExplicitTwoPhaseSolver::solveMixtureMomentum() {
-  argine::solveMixtureMomentum(nodes_in_use_, momentum_, grid_);
+void ExplicitTwoPhaseSolver::solveMixtureMomentum(Real dt) {
+  argine::solveMixtureMomentum(nodes_in_use_, momentum_, dt, grid_);
 }
 
 void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions(Real dt) {

@@ -12,6 +12,7 @@ void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& sett
   const auto nodes = active.nodes();
   const GridFields g = grid;
   const Real alpha = settings.local_damping;
+  const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;
   if (settings.implicit_drag) {
     const bool fixed_skeleton = settings.fixed_skeleton;
@@ -33,7 +34,7 @@ void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& sett
             g.acceleration_liquid_i(i, d) = implicitDragLiquidAcceleration(
                 g.force_liquid_i(i, d), g.force_mixture_i(i, d), g.drag_i(i), relative,
                 g.velocity_liquid_i(i, d), dt, scaling * mass, scaling * g.mass_liquid_i(i),
-                solid_mass, coupled, alpha);
+                solid_mass, coupled, alpha, form);
           }
         });
     return;
@@ -47,21 +48,24 @@ void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& sett
           g.acceleration_liquid_i(i, 0) = g.acceleration_liquid_i(i, 1) = 0;
           return;
         }
-        const Real inverse_mass = 1 / (scaling * mass);
+        const Real scaled_mass = scaling * mass;
+        const Real inverse_mass = 1 / scaled_mass;
         for (int d = 0; d < kDim; ++d) {
           const Real relative = g.velocity_liquid_i(i, d) - g.velocity_solid_i(i, d);
           const Real force = g.force_liquid_i(i, d) - g.drag_i(i) * relative;
-          const Real damped = force + localDampingForce(alpha, force, g.velocity_liquid_i(i, d));
+          const Real damped =
+              dampedForce(form, alpha, force, g.velocity_liquid_i(i, d), scaled_mass, dt);
           g.acceleration_liquid_i(i, d) = damped * inverse_mass;
         }
       });
 }
 
-void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                           GridFields& grid) {
   const auto nodes = active.nodes();
   const GridFields g = grid;
   const Real alpha = settings.local_damping;
+  const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;
   const bool fixed_skeleton = settings.fixed_skeleton;
   const bool liquid_with_solid = settings.liquid_with_solid;
@@ -75,20 +79,24 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
           return;
         }
         if (liquid_with_solid) {  // one mixture equation: (M_S + M_L) a = f^ext - f^int
-          const Real inverse_mixture_mass = 1 / (scaling * (mass + g.mass_liquid_i(i)));
+          const Real mixture_mass = scaling * (mass + g.mass_liquid_i(i));
+          const Real inverse_mixture_mass = 1 / mixture_mass;
           for (int d = 0; d < kDim; ++d) {
             const Real force = g.force_mixture_i(i, d);
-            const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+            const Real damped =
+                dampedForce(form, alpha, force, g.velocity_solid_i(i, d), mixture_mass, dt);
             g.acceleration_solid_i(i, d) = g.acceleration_liquid_i(i, d) =
                 damped * inverse_mixture_mass;
           }
           return;
         }
-        const Real inverse_mass = 1 / (scaling * mass);
+        const Real scaled_mass = scaling * mass;
+        const Real inverse_mass = 1 / scaled_mass;
         const Real liquid_mass = scaling * g.mass_liquid_i(i);
         for (int d = 0; d < kDim; ++d) {
           const Real force = g.force_mixture_i(i, d) - liquid_mass * g.acceleration_liquid_i(i, d);
-          const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+          const Real damped =
+              dampedForce(form, alpha, force, g.velocity_solid_i(i, d), scaled_mass, dt);
           g.acceleration_solid_i(i, d) = damped * inverse_mass;
         }
       });
@@ -100,6 +108,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
   const auto flags = constraints.flags();
   const GridFields g = grid;
   const Real alpha = settings.local_damping;
+  const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;
   const bool fixed_skeleton = settings.fixed_skeleton;
   const bool liquid_with_solid = settings.liquid_with_solid;
@@ -116,7 +125,8 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
           const bool fixed = fixed_skeleton || (bits & solidFixedBit(d));
           if (locked && !fixed && mixture_mass > 0) {
             const Real force = g.force_mixture_i(i, d);
-            const Real damped = force + localDampingForce(alpha, force, g.velocity_solid_i(i, d));
+            const Real damped =
+                dampedForce(form, alpha, force, g.velocity_solid_i(i, d), mixture_mass, dt);
             g.acceleration_solid_i(i, d) = g.acceleration_liquid_i(i, d) = damped / mixture_mass;
           }
           if (fixed) {
@@ -127,7 +137,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
               const Real relative = g.velocity_liquid_i(i, d) - g.velocity_solid_i(i, d);
               g.acceleration_liquid_i(i, d) = implicitDragLiquidAcceleration(
                   g.force_liquid_i(i, d), 0, g.drag_i(i), relative, g.velocity_liquid_i(i, d), dt,
-                  scaling * g.mass_liquid_intrinsic_i(i), 0, 0, false, alpha);
+                  scaling * g.mass_liquid_intrinsic_i(i), 0, 0, false, alpha, form);
             }
           }
         }

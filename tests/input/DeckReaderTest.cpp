@@ -57,6 +57,7 @@ const std::string kCompleteDeck = R"(argine:
       Duration (s): 10
       Gravity (m/s2): 9.81
       Local Damping: 0.05
+      Local Damping Form: dissipative
       Mass Scaling: 10
       Output Interval (s): 1
       Time Step: {Mode: fixed, Fixed Step (s): 1.0e-4}
@@ -160,6 +161,7 @@ TEST(DeckReader, CompleteDeckFillsEveryField) {
   EXPECT_EQ(first.duration, 10.0);
   EXPECT_EQ(first.gravity, 9.81);
   EXPECT_EQ(first.local_damping, 0.05);
+  EXPECT_EQ(first.local_damping_form, LocalDampingForm::Dissipative);
   EXPECT_EQ(first.mass_scaling, 10.0);
   EXPECT_EQ(first.output_interval, 1.0);
   EXPECT_FALSE(first.reset_displacements);
@@ -222,6 +224,8 @@ TEST(DeckReader, SchemaDefaultsEqualStructDefaults) {
   const StageSpec fresh_stage;
   EXPECT_EQ(stage.gravity, fresh_stage.gravity);
   EXPECT_EQ(stage.local_damping, fresh_stage.local_damping);
+  EXPECT_EQ(stage.local_damping_form, LocalDampingForm::StartOfStep);  // the default
+  EXPECT_EQ(stage.local_damping_form, fresh_stage.local_damping_form);
   EXPECT_EQ(stage.mass_scaling, fresh_stage.mass_scaling);
   EXPECT_EQ(stage.output_interval, fresh_stage.output_interval);
   EXPECT_EQ(stage.reset_displacements, fresh_stage.reset_displacements);

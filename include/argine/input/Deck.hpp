@@ -13,6 +13,7 @@
 #include "argine/core/Types.hpp"
 #include "argine/materials/MaterialParameters.hpp"
 #include "argine/mesh/Mesh.hpp"
+#include "argine/physics/LocalDamping.hpp"
 #include "argine/timestep/CriterionKind.hpp"
 #include "argine/transfer/TransferScheme.hpp"
 
@@ -288,6 +289,9 @@ struct StageSpec {
   /// `Liquid Drag: implicit`: the Darcy drag at the new velocities, solved node by node with
   /// the mixture equation (MomentumBalance.hpp); false: at t^k, the thesis' explicit scheme.
   bool implicit_drag = false;
+  /// `Local Damping Form`: start-of-step (-alpha |f| sign(v^k), the default) or dissipative
+  /// (physics/LocalDamping.hpp).
+  LocalDampingForm local_damping_form = LocalDampingForm::StartOfStep;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

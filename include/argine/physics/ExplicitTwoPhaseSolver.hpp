@@ -261,7 +261,7 @@ class ExplicitTwoPhaseSolver {
   void detectFreeBoundary();
   bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum(Real dt);
-  void solveMixtureMomentum();
+  void solveMixtureMomentum(Real dt);
   void applyAccelerationBoundaryConditions(Real dt);
   void correctHydraulicAccelerations(Real dt);
   void applyVelocityBoundaryConditions();  // of updateNodalVelocities

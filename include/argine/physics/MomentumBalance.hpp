@@ -4,9 +4,10 @@
 ///   liquid  (4.36): M~_L a_L = f_L^ext - f_L^int - Q_L (v_L - v_S)
 ///   mixture (4.37): M_S a_S = f^ext - f^int - M_L a_L
 /// with lumped masses (4.38-4.40) multiplied by the mass-scaling factor, and local damping
-/// (Anura3D style): each phase's unbalanced force F gets -alpha |F| sign(v), component by
-/// component, v the phase's nodal velocity at t^k. Nodes without liquid mass skip the liquid
-/// equation (a_L = 0). In fixed-skeleton mode a_S = 0 and only the liquid moves. With the
+/// (LocalDamping.hpp): each phase's unbalanced force F gets D, component by component, v the
+/// phase's nodal velocity at t^k: -alpha |F| sign(v) (Anura3D style, the default) or the
+/// dissipative form (`Local Damping Form: dissipative`). Nodes without liquid mass skip the
+/// liquid equation (a_L = 0). In fixed-skeleton mode a_S = 0 and only the liquid moves. With the
 /// liquid pressure held, the liquid moves with the solid: one mixture equation per node.
 ///
 /// Implicit drag (`Liquid Drag: implicit`, doc/theory.md Sec. 3.1): the drag acts on the
@@ -22,6 +23,7 @@
 /// Q dt -> infinity both phases take F_m / (M_S + M_L) (undrained).
 
 #include "argine/core/Types.hpp"
+#include "argine/physics/LocalDamping.hpp"
 
 namespace argine {
 
@@ -39,21 +41,18 @@ struct MomentumSettings {
   bool liquid_with_solid = false;
   /// The drag at the new velocities (StageSpec::implicit_drag; see the file comment).
   bool implicit_drag = false;
+  /// The form of the local damping (LocalDamping.hpp; StageSpec::local_damping_form).
+  LocalDampingForm local_damping_form = LocalDampingForm::StartOfStep;
 };
 
-/// The local damping force of one component: -alpha |force| sign(velocity).
-KOKKOS_INLINE_FUNCTION Real localDampingForce(Real alpha, Real force, Real velocity) {
-  const Real magnitude = force < 0 ? -force : force;
-  return velocity > 0 ? -alpha * magnitude : (velocity < 0 ? alpha * magnitude : 0);
-}
-
 /// Step 1: liquid accelerations a_L on the active nodes (4.36); dt (s) is the step, read
-/// only with the implicit drag.
+/// with the implicit drag and the dissipative damping.
 void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                          GridFields& grid);
 
-/// Step 2: solid accelerations a_S on the active nodes (4.37), using a_L of step 1.
-void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings,
+/// Step 2: solid accelerations a_S on the active nodes (4.37), using a_L of step 1; dt (s)
+/// read by the dissipative damping only.
+void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                           GridFields& grid);
 
 /// Essential conditions on the accelerations of the constrained nodes. Where the liquid is
@@ -69,20 +68,19 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
 /// The implicit-drag liquid acceleration of one direction (see the file comment): the
 /// unbalanced liquid force F_L - Q r + Q dt F_m / M_S over M~_L + Q dt (1 + M_L/M_S), each
 /// mass already scaled; `coupled` false (a_S = 0) drops the M_S terms. Local damping acts
-/// on that numerator with the liquid velocity, as on the explicit force.
-KOKKOS_INLINE_FUNCTION Real implicitDragLiquidAcceleration(Real liquid_force, Real mixture_force,
-                                                           Real drag, Real relative_velocity,
-                                                           Real liquid_velocity, Real dt,
-                                                           Real intrinsic_liquid_mass,
-                                                           Real liquid_mass, Real solid_mass,
-                                                           bool coupled, Real alpha) {
+/// on that numerator with the liquid velocity, as on the explicit force, the denominator
+/// the mass (dampedForce).
+KOKKOS_INLINE_FUNCTION Real implicitDragLiquidAcceleration(
+    Real liquid_force, Real mixture_force, Real drag, Real relative_velocity, Real liquid_velocity,
+    Real dt, Real intrinsic_liquid_mass, Real liquid_mass, Real solid_mass, bool coupled,
+    Real alpha, LocalDampingForm form) {
   Real numerator = liquid_force - drag * relative_velocity;
   Real denominator = intrinsic_liquid_mass + drag * dt;
   if (coupled) {
     numerator += drag * dt * mixture_force / solid_mass;
     denominator += drag * dt * liquid_mass / solid_mass;
   }
-  return (numerator + localDampingForce(alpha, numerator, liquid_velocity)) / denominator;
+  return dampedForce(form, alpha, numerator, liquid_velocity, denominator, dt) / denominator;
 }
 
 }  // namespace argine
