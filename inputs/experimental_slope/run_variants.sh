@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # The variants of experimental_slope_rise.yaml: the same deck with one or two inputs changed
 # (the thesis' ten-fold permeability, Table 5.4's MC_1, the strength models of the thesis'
-# LEM). Each variant deck is written to results/experimental_slope_variants/ and run there,
-# one after another (one run at a time). Usage, from the repository root:
+# LEM), and of the whole test with each level held one day, experimental_slope_slow.yaml
+# (slow_*: Table 5.4's MC_1, the thesis' other two HCCs, Hillel r = 2 and constant, and the
+# drawdown without mass scaling, slow_ms1).
+# Each variant deck is written to results/experimental_slope_variants/ and run there, one
+# after another (one run at a time). Usage, from the repository root:
 #
 #   inputs/experimental_slope/run_variants.sh [VARIANT ...]     # default: all of them
 #
 # Variants: mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm
+#           slow_mc1 slow_hillel slow_constant slow_ms1
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-deck="$here/experimental_slope_rise.yaml"
 out="$root/results/experimental_slope_variants"
 argine="${ARGINE:-$root/build/argine}"
 mkdir -p "$out"
@@ -22,6 +25,9 @@ mc1b='s|Cohesion Suction Rate B: 0.07      # Table 5.4, MC_2|Cohesion Suction Ra
 patm='s|Atmospheric Pressure (Pa): 1000$|Atmospheric Pressure (Pa): 101325|'
 fredlund='s|    Minimum Depth (m): 0.5|    Minimum Depth (m): 0.5\n    Suction Strength: fredlund\n    Suction Friction Angle (deg): 20|'
 vanapalli='s|    Minimum Depth (m): 0.5|    Minimum Depth (m): 0.5\n    Suction Strength: vanapalli|'
+hillel='s|Conductivity: {Model: Mualem, Lambda: 0.75, |Conductivity: {Model: Hillel, Exponent: 2, |'
+constant='s|Conductivity: {Model: Mualem, Lambda: 0.75, |Conductivity: {Model: constant, |'
+ms1='s|Mass Scaling: 100                  # the thesis|Mass Scaling: 1                    # not the thesis|'
 
 changes() {
   case "$1" in
@@ -34,24 +40,32 @@ changes() {
     k10_vanapalli) printf '%s\n' "$k10" "$vanapalli" ;;
     patm) printf '%s\n' "$patm" ;;
     k10_patm) printf '%s\n' "$k10" "$patm" ;;
+    slow_mc1) printf '%s\n' "$mc1a" "$mc1b" ;;
+    slow_hillel) printf '%s\n' "$hillel" ;;
+    slow_constant) printf '%s\n' "$constant" ;;
+    slow_ms1) printf '%s\n' "$ms1" ;;
     *) echo "unknown variant $1" >&2; return 1 ;;
   esac
 }
 
 variants=("$@")
-[ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm)
+[ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli
+  patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1)
 for v in "${variants[@]}"; do changes "$v" > /dev/null; done
 for v in "${variants[@]}"; do
-  name="experimental_slope_rise_$v"
+  case "$v" in
+    slow_*) base=experimental_slope_slow name="experimental_slope_$v" ;;
+    *) base=experimental_slope_rise name="experimental_slope_rise_$v" ;;
+  esac
   target="$out/$name.yaml"
-  cp "$deck" "$target"
+  cp "$here/$base.yaml" "$target"
   while IFS= read -r expr; do
     [ -z "$expr" ] && continue
     before=$(md5sum < "$target")
     sed -i "$expr" "$target"
     [ "$before" != "$(md5sum < "$target")" ] || { echo "$v: no match for $expr" >&2; exit 2; }
   done < <(changes "$v")
-  sed -i "s|Name: experimental_slope_rise}|Name: $name}|" "$target"
+  sed -i "s|Name: $base}|Name: $name}|" "$target"
   echo "== $name"
   "$argine" check "$target"
   start=$(date +%s)
