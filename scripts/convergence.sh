@@ -4,8 +4,8 @@
 # their changes and observed order (scripts/levee_convergence.py), and charts them against
 # wall time.
 #   scripts/convergence.sh [deck.yaml] [element sizes (m)...]
-#   default: inputs/levee_drawdown/levee_drawdown.yaml at 0.2 and 0.1 m
-# CONVERGENCE_TIMES (s after the event started; default "2 3 20"), CONVERGENCE_START (the
+#   default: inputs/levee_drawdown/levee_drawdown.yaml at 0.4, 0.2 and 0.1 m
+# CONVERGENCE_TIMES (s after the event started; default "2 3 6 20"), CONVERGENCE_START (the
 # simulation time the event starts at; default 1), CONVERGENCE_LAST_DURATION (s: the last
 # stage's Duration in every copy, e.g. 19 for the first 20 s of levee_rainfall's 100 s;
 # default: the deck's), ARGINE_RANKS (MPI ranks per run).
@@ -17,7 +17,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 deck=${1:-$root/inputs/levee_drawdown/levee_drawdown.yaml}
 shift || true
 sizes=("$@")
-((${#sizes[@]})) || sizes=(0.2 0.1)
+((${#sizes[@]})) || sizes=(0.4 0.2 0.1)
 "$root/scripts/build.sh"
 build_dir=${ARGINE_BUILD_DIR:-$root/build}
 scene=$(basename "$deck" .yaml)
@@ -59,5 +59,5 @@ for h in "${sizes[@]}"; do
 done
 # shellcheck disable=SC2086
 /usr/bin/python3 "$root/scripts/levee_convergence.py" "${runs[@]}" \
-  --times ${CONVERGENCE_TIMES:-2 3 20} --start "${CONVERGENCE_START:-1}" \
+  --times ${CONVERGENCE_TIMES:-2 3 6 20} --start "${CONVERGENCE_START:-1}" \
   --figure "$out/${scene}_convergence.png"
