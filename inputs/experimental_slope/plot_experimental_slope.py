@@ -18,6 +18,8 @@ are in DIR/experimental_slope_variants/). Writes next to this script:
   experimental_slope_critical_circle.png   p_L of the points and the critical circle
   experimental_slope_drawdown.png          the drawdown: probes and the final deposit
   experimental_slope_whole_test.png        the whole-test decks: F(t), probes, deposits
+  experimental_slope_whole_test_variants.png  the same for the slow deck and its run_variants.sh
+                                           slow_* variants (DIR/experimental_slope_variants/)
 and prints, per run, F at the end of every water level's hold and the first level at which
 F < 1.
 """
@@ -352,6 +354,12 @@ def face_angle(x, y, low=0.5, high=5.0):
     return math.degrees(math.atan2(1.0, -slope)) if slope < 0 else float("nan")
 
 
+# run_variants.sh slow_*: the slow whole test with MC_1, the Hillel and constant HCCs, and
+# without mass scaling in the drawdown
+SLOW_VARIANTS = ("experimental_slope_slow_mc1", "experimental_slope_slow_hillel",
+                 "experimental_slope_slow_constant", "experimental_slope_slow_ms1")
+
+
 def report_whole_test(results, name, deck):
     """The whole-test decks: F and the largest displacement at the end of every stage, the
     face angle, the drawdown's run-out; returns what the figure needs."""
@@ -362,7 +370,12 @@ def report_whole_test(results, name, deck):
     times, x0, y0, displacement = point_displacements(
         os.path.join(directory, name + "_points.e"))
     plan = stage_plan(deck)
-    ends = stage_ends(plan, times)
+    try:
+        ends = stage_ends(plan, times)
+    except IndexError:  # a run still going (or stopped): its outputs miss the last stages
+        print(f"\n{name}: outputs end at {times[-1]:.1f} s, before the deck's last stage; "
+              "left out")
+        return None
     print(f"\n{name}: stage, end time, F (Bishop, critical circle), largest |u| of a point "
           f"since the start, face angle (0.5-5 m high)")
     rows = []
@@ -413,7 +426,7 @@ def plot_whole_test(runs, path):
                 uy = pr["displacement_y"][after] - pr["displacement_y"][after][0]
                 row[1].plot(t, np.hypot(ux, uy), color=colour, label=probe)
         row[1].axvspan(0.0, 1.0, color="0.85", label="level 6 -> 3 m")
-        row[1].set_xlabel("time since the drawdown started (s, mass-scaled)")
+        row[1].set_xlabel("time since the drawdown started (s)")
         row[1].set_ylabel("|u| in the drawdown (m)")
         row[1].grid(alpha=0.3)
         row[1].legend(fontsize=8)
@@ -448,6 +461,13 @@ def main():
         plot_circles(runs, os.path.join(HERE, "experimental_slope_critical_circle.png"))
     plot_drawdown(args.results, os.path.join(HERE, "experimental_slope_drawdown.png"))
     plot_whole_test(whole, os.path.join(HERE, "experimental_slope_whole_test.png"))
+    # run_variants.sh's variants of the slow whole test, each with its own deck beside it
+    variants_dir = os.path.join(args.results, "experimental_slope_variants")
+    variants = [report_whole_test(variants_dir, name, os.path.join(variants_dir, name + ".yaml"))
+                for name in SLOW_VARIANTS]
+    if any(variants):
+        plot_whole_test([whole[1]] + variants,
+                        os.path.join(HERE, "experimental_slope_whole_test_variants.png"))
 
 
 if __name__ == "__main__":
