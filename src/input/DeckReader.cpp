@@ -149,7 +149,8 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
   deck.mesh = parseMesh(top.section("Mesh"));
   for (const auto& material : top.entries("Materials"))
     deck.materials.push_back(parseMaterial(material));
-  for (const auto& stage : top.entries("Stages")) deck.stages.push_back(parseStage(stage, deck.mesh.shape_functions));
+  for (const auto& stage : top.entries("Stages"))
+    deck.stages.push_back(parseStage(stage, deck.mesh.shape_functions));
   deck.output = parseOutput(top.section("Output"));
   deck.initialisation = parseInitialisation(top.section("Initialisation"));  // issue P4
   deck.probes = parseProbes(top.section("Probes"));                          // issue P4

@@ -17,10 +17,10 @@
 ///    velocity vbar = (v + v*)/2 = v + dt F/(2m),
 ///      D = -sign(vbar) min(alpha |F|, m |vbar| / dt).
 ///    D opposes the velocity the central-difference step does work with, and never takes
-///    vbar + dt D/m (= v^{k+1} - dt F/(2m)) past zero. For a linear system with lumped masses stepped as argine steps it
-///    (v^{k+1} = v^k + dt a, u^{k+1} = u^k + dt v^{k+1}), the quadratic invariant of the
-///    undamped scheme, H = sum_i m_i (v_i - dt F_i / (2 m_i))^2 + u^T (K - dt^2/4 K M^-1 K) u
-///    (u at t^k, v at t^{k+1}), falls or stays at every step: the damped step is stable
+///    vbar + dt D/m (= v^{k+1} - dt F/(2m)) past zero. For a linear system with lumped masses
+///    stepped as argine steps it (v^{k+1} = v^k + dt a, u^{k+1} = u^k + dt v^{k+1}), the quadratic
+///    invariant of the undamped scheme, H = sum_i m_i (v_i - dt F_i / (2 m_i))^2 + u^T (K - dt^2/4
+///    K M^-1 K) u (u at t^k, v at t^{k+1}), falls or stays at every step: the damped step is stable
 ///    wherever the undamped one is. It equals the start-of-step form when sign(vbar) =
 ///    sign(v) and alpha |F| dt / m <= |vbar|; |v| > (1/2 + alpha) dt |F| / m suffices (a
 ///    node moving steadily).
