@@ -33,7 +33,8 @@ unsigned NodalConstraints::flagsOf(int node) const {
 
 void NodalConstraints::constrainVelocities(
     const Kokkos::View<Real* [kDim], MemSpace>& velocity_solid_i,
-    const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i) const {
+    const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i,
+    const bool keep_relative_velocity) const {
   const auto nodes = nodes_;
   const auto flags = flags_;
   Kokkos::parallel_for(
@@ -42,7 +43,12 @@ void NodalConstraints::constrainVelocities(
         const int i = nodes(j);
         const unsigned bits = flags(j);
         for (int d = 0; d < kDim; ++d) {
-          if (bits & solidFixedBit(d)) velocity_solid_i(i, d) = 0;
+          if (bits & solidFixedBit(d)) {
+            // the mapped v_S,d here is motion the fixity forbids; the liquid shares it (a
+            // point's grid-invisible FLIP velocity, or a body sliding into a fixed node)
+            if (keep_relative_velocity) velocity_liquid_i(i, d) -= velocity_solid_i(i, d);
+            velocity_solid_i(i, d) = 0;
+          }
           if (bits & liquidLockedBit(d)) velocity_liquid_i(i, d) = velocity_solid_i(i, d);
         }
       });

@@ -710,6 +710,16 @@ ListSchema stageKeys() {
                             "steadily (doc/theory.md Sec. 3.5, doc/stability.md)")
                 .byDefault(std::string("start-of-step"))
                 .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
+  stage.add(KeySpec::choice("Liquid At Solid Fixities", Words{"velocity", "relative velocity"},
+                            "at a node direction with a solid fixity and no impermeable lock, "
+                            "after the remap: velocity: the liquid keeps its mapped velocity "
+                            "v_L (the thesis), so all of it is Darcy flux against the fixed "
+                            "solid, including the motion both phases share that the fixity "
+                            "removes from the solid (a point's grid-invisible FLIP velocity, "
+                            "a body sliding onto a fixed base); relative velocity: it keeps "
+                            "v_L - v_S as mapped (doc/theory.md Sec. 5.1)")
+                .byDefault(std::string("velocity"))
+                .when("Solver", {"explicit", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

@@ -442,6 +442,8 @@ StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
   spec.local_damping_form = stage.word("Local Damping Form") == "dissipative"
                                 ? LocalDampingForm::Dissipative
                                 : LocalDampingForm::StartOfStep;
+  spec.fixity_keeps_relative_velocity =
+      stage.word("Liquid At Solid Fixities") == "relative velocity";
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

@@ -112,6 +112,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
                      "skeleton stages; implicit seepage needs the implicit solver");
   momentum_.local_damping = stage.local_damping;
   momentum_.local_damping_form = stage.local_damping_form;
+  momentum_.fixity_keeps_relative_velocity = stage.fixity_keeps_relative_velocity;
   momentum_.mass_scaling = stage.mass_scaling;
   transfer_.scheme = stage.transfer;
   transfer_.blend = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
@@ -403,7 +404,8 @@ void ExplicitTwoPhaseSolver::applyAccelerationBoundaryConditions(Real dt) {
 }
 
 void ExplicitTwoPhaseSolver::applyVelocityBoundaryConditions() {
-  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i);
+  boundaries_.constraints().constrainVelocities(grid_.velocity_solid_i, grid_.velocity_liquid_i,
+                                                momentum_.fixity_keeps_relative_velocity);
   boundaries_.frictionalContact().constrainVelocities(
       grid_.mass_solid_i, grid_.mass_liquid_i, grid_.velocity_solid_i, grid_.velocity_liquid_i,
       momentum_.liquid_with_solid);

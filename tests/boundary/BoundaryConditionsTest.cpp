@@ -197,5 +197,49 @@ TEST(NodalConstraints, ConstrainVelocitiesFixesSolidAndLocksLiquid) {
   EXPECT_EQ(l(2, 0), 2.0);  // unconstrained node untouched
 }
 
+TEST(NodalConstraints, FixityKeepsTheMappedRelativeVelocityWhenAsked) {
+  // A base node under a body that the remap says moves at (0.04, -0.06) m/s with its liquid
+  // 1 mm/s faster downwards: the fixity stops the solid; the liquid keeps either all its
+  // velocity (the thesis: 6.1 cm/s of Darcy flux out of a base the body cannot cross) or
+  // only its relative velocity (-1 mm/s).
+  NodalConstraints constraints;
+  constraints.add(0, kSolidFixedX | kSolidFixedY);
+  constraints.add(1, kSolidFixedX | kSolidFixedY | kLiquidLockedY);  // sealed base
+  constraints.add(2, kLiquidLockedX);                                // no fixity
+  constraints.finalise();
+  Kokkos::View<Real*[kDim], MemSpace> vs("vs", 3), vl("vl", 3);
+  const auto fill = [&] {
+    auto s = Kokkos::create_mirror_view(vs);
+    auto l = Kokkos::create_mirror_view(vl);
+    for (int i = 0; i < 3; ++i) {
+      s(i, 0) = 0.04, s(i, 1) = -0.06;
+      l(i, 0) = 0.04, l(i, 1) = -0.061;
+    }
+    Kokkos::deep_copy(vs, s);
+    Kokkos::deep_copy(vl, l);
+  };
+  fill();
+  constraints.constrainVelocities(vs, vl);  // the thesis
+  auto l = hostCopy(vl);
+  EXPECT_EQ(l(0, 0), 0.04);
+  EXPECT_EQ(l(0, 1), -0.061);
+  fill();
+  constraints.constrainVelocities(vs, vl, true);
+  const auto s = hostCopy(vs);
+  l = hostCopy(vl);
+  EXPECT_EQ(s(0, 0), 0.0);
+  EXPECT_EQ(s(0, 1), 0.0);
+  EXPECT_EQ(l(0, 0), 0.0);
+  EXPECT_DOUBLE_EQ(l(0, 1), -0.001);
+  EXPECT_EQ(l(1, 0), 0.0);   // fixed in x: relative velocity 0 there as well
+  EXPECT_EQ(l(1, 1), 0.0);   // locked: at rest with the fixed solid
+  EXPECT_EQ(s(2, 0), 0.04);  // no fixity: the option changes nothing
+  EXPECT_EQ(l(2, 0), 0.04);
+  EXPECT_EQ(l(2, 1), -0.061);
+  // applied twice (the hydraulic correction's pass): nothing more is removed
+  constraints.constrainVelocities(vs, vl, true);
+  EXPECT_DOUBLE_EQ(hostCopy(vl)(0, 1), -0.001);
+}
+
 }  // namespace
 }  // namespace argine

@@ -56,9 +56,14 @@ class NodalConstraints {
 
   /// Applies the velocity conditions to nodal velocities: v_S,d = 0 where solid-fixed, then
   /// v_L,d = v_S,d where liquid-locked. Nodes without liquid (`liquid_mass_i` == 0) keep
-  /// v_L = v_S anyway.
+  /// v_L = v_S anyway. At a solid-fixed direction that is not locked the liquid keeps its
+  /// mapped velocity v_L,d (the thesis), or, with `keep_relative_velocity`, its mapped
+  /// RELATIVE velocity: v_L,d -= v_S,d before v_S,d = 0, so the fixity removes the motion
+  /// both phases share and no Darcy flux appears that the points do not carry
+  /// (StageSpec::fixity_keeps_relative_velocity; doc/theory.md Sec. 5.1).
   void constrainVelocities(const Kokkos::View<Real* [kDim], MemSpace>& velocity_solid_i,
-                           const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i) const;
+                           const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i,
+                           bool keep_relative_velocity = false) const;
 
  private:
   std::map<int, unsigned> pending_;

@@ -292,6 +292,10 @@ struct StageSpec {
   /// `Local Damping Form`: start-of-step (-alpha |f| sign(v^k), the default) or dissipative
   /// (physics/LocalDamping.hpp).
   LocalDampingForm local_damping_form = LocalDampingForm::StartOfStep;
+  /// `Liquid At Solid Fixities`: `velocity` (false, the thesis) keeps the liquid's mapped
+  /// velocity at a solid-fixed, permeable node direction; `relative velocity` (true) keeps
+  /// its mapped velocity relative to the solid (NodalConstraints::constrainVelocities).
+  bool fixity_keeps_relative_velocity = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

@@ -43,6 +43,8 @@ struct MomentumSettings {
   bool implicit_drag = false;
   /// The form of the local damping (LocalDamping.hpp; StageSpec::local_damping_form).
   LocalDampingForm local_damping_form = LocalDampingForm::StartOfStep;
+  /// StageSpec::fixity_keeps_relative_velocity (NodalConstraints::constrainVelocities).
+  bool fixity_keeps_relative_velocity = false;
 };
 
 /// Step 1: liquid accelerations a_L on the active nodes (4.36); dt (s) is the step, read
