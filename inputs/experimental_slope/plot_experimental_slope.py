@@ -355,9 +355,11 @@ def face_angle(x, y, low=0.5, high=5.0):
 
 
 # run_variants.sh slow_*: the slow whole test with MC_1, the Hillel and constant HCCs, and
-# without mass scaling in the drawdown
+# without mass scaling in the drawdown (also with the liquid's relative velocity kept at the
+# fixities)
 SLOW_VARIANTS = ("experimental_slope_slow_mc1", "experimental_slope_slow_hillel",
-                 "experimental_slope_slow_constant", "experimental_slope_slow_ms1")
+                 "experimental_slope_slow_constant", "experimental_slope_slow_ms1",
+                 "experimental_slope_slow_ms1_fixity")
 
 
 def report_whole_test(results, name, deck):

@@ -3,14 +3,15 @@
 # (the thesis' ten-fold permeability, Table 5.4's MC_1, the strength models of the thesis'
 # LEM), and of the whole test with each level held one day, experimental_slope_slow.yaml
 # (slow_*: Table 5.4's MC_1, the thesis' other two HCCs, Hillel r = 2 and constant, and the
-# drawdown without mass scaling, slow_ms1).
+# drawdown without mass scaling, slow_ms1, and with the liquid's relative velocity kept at
+# the fixities too, slow_ms1_fixity).
 # Each variant deck is written to results/experimental_slope_variants/ and run there, one
 # after another (one run at a time). Usage, from the repository root:
 #
 #   inputs/experimental_slope/run_variants.sh [VARIANT ...]     # default: all of them
 #
 # Variants: mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm
-#           slow_mc1 slow_hillel slow_constant slow_ms1
+#           slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -28,6 +29,8 @@ vanapalli='s|    Minimum Depth (m): 0.5|    Minimum Depth (m): 0.5\n    Suction 
 hillel='s|Conductivity: {Model: Mualem, Lambda: 0.75, |Conductivity: {Model: Hillel, Exponent: 2, |'
 constant='s|Conductivity: {Model: Mualem, Lambda: 0.75, |Conductivity: {Model: constant, |'
 ms1='s|Mass Scaling: 100                  # the thesis|Mass Scaling: 1                    # not the thesis|'
+# every explicit and quasi-static stage: the liquid keeps its relative velocity at the fixities
+fixity='s#^\( *\)Solver: \(explicit\|quasi-static\)\(.*\)$#&\n\1Liquid At Solid Fixities: relative velocity#'
 
 changes() {
   case "$1" in
@@ -44,13 +47,14 @@ changes() {
     slow_hillel) printf '%s\n' "$hillel" ;;
     slow_constant) printf '%s\n' "$constant" ;;
     slow_ms1) printf '%s\n' "$ms1" ;;
+    slow_ms1_fixity) printf '%s\n' "$ms1" "$fixity" ;;
     *) echo "unknown variant $1" >&2; return 1 ;;
   esac
 }
 
 variants=("$@")
 [ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli
-  patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1)
+  patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity)
 for v in "${variants[@]}"; do changes "$v" > /dev/null; done
 for v in "${variants[@]}"; do
   case "$v" in
