@@ -720,6 +720,17 @@ ListSchema stageKeys() {
                             "v_L - v_S as mapped (doc/theory.md Sec. 5.1)")
                 .byDefault(std::string("velocity"))
                 .when("Solver", {"explicit", "quasi-static"}));
+  stage.add(KeySpec::choice("Hydraulic Loads", Words{"on free sides", "at boundary points"},
+                            "where the pressure of total head and pressure series conditions "
+                            "loads the soil: on free sides: integrated along the free sides "
+                            "and given to their end nodes (the thesis), right where the mesh "
+                            "follows the surface; at boundary points: each node's load passed "
+                            "through the points that carry the node to their shape functions "
+                            "at their outer edge, for a surface that cuts through its cells "
+                            "(a soil region in a rectangle grid: on free sides put +70 kPa "
+                            "on a surface point of the grid levee; doc/theory.md Sec. 5.5)")
+                .byDefault(std::string("on free sides"))
+                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

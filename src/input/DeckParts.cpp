@@ -444,6 +444,7 @@ StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
                                 : LocalDampingForm::StartOfStep;
   spec.fixity_keeps_relative_velocity =
       stage.word("Liquid At Solid Fixities") == "relative velocity";
+  spec.hydraulic_loads_at_points = stage.word("Hydraulic Loads") == "at boundary points";
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

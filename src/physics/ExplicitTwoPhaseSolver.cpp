@@ -14,6 +14,7 @@
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/LiquidState.hpp"
+#include "argine/physics/PointBorneLoads.hpp"
 #include "argine/physics/PointInitialisation.hpp"
 #include "argine/physics/PointUpdates.hpp"
 #include "argine/physics/StabilityCheck.hpp"
@@ -62,6 +63,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
       break;
     }
   boundary_fields_.allocate(mesh.numNodes());
+  point_borne_loads_.allocate(mesh.numNodes());
   const auto X = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.coordinates);
   Real low[kDim] = {0, 0}, high[kDim] = {0, 0};
   for (int i = 0; i < mesh.numNodes(); ++i)
@@ -113,6 +115,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.local_damping = stage.local_damping;
   momentum_.local_damping_form = stage.local_damping_form;
   momentum_.fixity_keeps_relative_velocity = stage.fixity_keeps_relative_velocity;
+  hydraulic_loads_at_points_ = stage.hydraulic_loads_at_points;
   momentum_.mass_scaling = stage.mass_scaling;
   transfer_.scheme = stage.transfer;
   transfer_.blend = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
@@ -347,7 +350,20 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
                                       reproducible_sums_ ? &boundary_lo_ : nullptr);
   if (reproducible_sums_)
     foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
-  argine::addHydraulicLoads(hydraulic_.loads(), grid_);  // 4.50 into 4.41 and 4.42
+  addHydraulicLoadsToGrid();  // 4.50 into 4.41 and 4.42
+}
+
+void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
+  if (!hydraulic_loads_at_points_) return argine::addHydraulicLoads(hydraulic_.loads(), grid_);
+  // through the points that carry the loaded nodes (PointBorneLoads.hpp)
+  point_borne_loads_.zero(nodes_in_use_);
+  mapPointBorneLoadWeights(hydraulic_.loads(), points_, shapes_, table_.liquidCarrying(),
+                           point_borne_loads_);
+  if (exchange_) exchange_->sum({nodalField(point_borne_loads_.weight_i)});
+  spreadPointBorneLoads(points_, shapes_, table_.liquidCarrying(), boundary_fields_,
+                        point_borne_loads_);
+  if (exchange_) exchange_->sum({nodalField(point_borne_loads_.spread_i)});
+  addPointBorneLoads(point_borne_loads_, nodes_in_use_, grid_);
 }
 
 void ExplicitTwoPhaseSolver::markConditionedNodes(Kokkos::View<const int*, MemSpace> corrected,

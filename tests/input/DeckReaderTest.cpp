@@ -59,6 +59,7 @@ const std::string kCompleteDeck = R"(argine:
       Local Damping: 0.05
       Local Damping Form: dissipative
       Liquid At Solid Fixities: relative velocity
+      Hydraulic Loads: at boundary points
       Mass Scaling: 10
       Output Interval (s): 1
       Time Step: {Mode: fixed, Fixed Step (s): 1.0e-4}
@@ -164,6 +165,7 @@ TEST(DeckReader, CompleteDeckFillsEveryField) {
   EXPECT_EQ(first.local_damping, 0.05);
   EXPECT_EQ(first.local_damping_form, LocalDampingForm::Dissipative);
   EXPECT_TRUE(first.fixity_keeps_relative_velocity);
+  EXPECT_TRUE(first.hydraulic_loads_at_points);
   EXPECT_EQ(first.mass_scaling, 10.0);
   EXPECT_EQ(first.output_interval, 1.0);
   EXPECT_FALSE(first.reset_displacements);
@@ -229,6 +231,7 @@ TEST(DeckReader, SchemaDefaultsEqualStructDefaults) {
   EXPECT_EQ(stage.local_damping_form, LocalDampingForm::StartOfStep);  // the default
   EXPECT_EQ(stage.local_damping_form, fresh_stage.local_damping_form);
   EXPECT_FALSE(stage.fixity_keeps_relative_velocity);  // the default: the thesis
+  EXPECT_FALSE(stage.hydraulic_loads_at_points);       // the default: the thesis' free sides
   EXPECT_EQ(stage.mass_scaling, fresh_stage.mass_scaling);
   EXPECT_EQ(stage.output_interval, fresh_stage.output_interval);
   EXPECT_EQ(stage.reset_displacements, fresh_stage.reset_displacements);

@@ -296,6 +296,10 @@ struct StageSpec {
   /// velocity at a solid-fixed, permeable node direction; `relative velocity` (true) keeps
   /// its mapped velocity relative to the solid (NodalConstraints::constrainVelocities).
   bool fixity_keeps_relative_velocity = false;
+  /// `Hydraulic Loads`: `on free sides` (false, the thesis) gives each free side's pressure
+  /// load to its end nodes; `at boundary points` (true) passes it through the points that
+  /// carry those nodes (physics/PointBorneLoads.hpp).
+  bool hydraulic_loads_at_points = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

@@ -76,6 +76,7 @@
 #include "argine/physics/LiquidOutflowLimit.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/MomentumBalance.hpp"
+#include "argine/physics/PointBorneLoads.hpp"
 #include "argine/physics/SideWallFriction.hpp"
 #include "argine/physics/StabilityCheck.hpp"
 #include "argine/physics/StepProfile.hpp"
@@ -258,6 +259,9 @@ class ExplicitTwoPhaseSolver {
   // The steps of Sec. 3.3, in order.
   void mapMassesMomentaAndForces();
   void applyHydraulicLoads();
+  /// The planned loads into f^ext and f_L^ext: at their nodes, or through the points
+  /// (`Hydraulic Loads`, PointBorneLoads.hpp).
+  void addHydraulicLoadsToGrid();
   void detectFreeBoundary();
   bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum(Real dt);
@@ -314,6 +318,10 @@ class ExplicitTwoPhaseSolver {
   FreeBoundary free_boundary_;
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
+  /// `Hydraulic Loads: at boundary points` (StageSpec::hydraulic_loads_at_points) and its
+  /// nodal work fields.
+  bool hydraulic_loads_at_points_ = false;
+  PointBorneLoadFields point_borne_loads_;
   /// Per entry of hydraulic_.corrections(): the node's impermeable-lock and solid-fixity bits
   /// (the flux correction acts in the unlocked directions only, and through the liquid alone
   /// where the solid is fixed), refreshed with each plan.

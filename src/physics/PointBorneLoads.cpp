@@ -1,0 +1,165 @@
+#include "argine/physics/PointBorneLoads.hpp"
+
+#include <Kokkos_ScatterView.hpp>
+
+#include "argine/physics/HydraulicBoundaryStep.hpp"
+#include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
+#include "argine/transfer/GridFields.hpp"
+#include "argine/transfer/PointShapes.hpp"
+
+namespace argine {
+
+namespace {
+
+namespace KE = Kokkos::Experimental;
+
+/// A point's two weights: its mixture mass (4.51's m_m) and, if it carries liquid, its
+/// volume (the intrinsic liquid mass rho_L V of 4.38 over a uniform rho_L).
+struct PointWeights {
+  Real mixture = 0;
+  Real liquid = 0;
+};
+
+KOKKOS_INLINE_FUNCTION PointWeights weightsOf(const MaterialPoints& points, int p, bool wet) {
+  return {points.mass_solid(p) + (wet ? points.mass_liquid(p) : 0), wet ? points.volume(p) : 0};
+}
+
+template <class Family>
+void mapWeightsImpl(const MaterialPoints& points, const PointShapes& shapes,
+                    const Kokkos::View<const int*, MemSpace>& liquid_m,
+                    PointBorneLoadFields& fields) {
+  const MaterialPoints pts = points;
+  auto weight_sv = KE::create_scatter_view(fields.weight_i);
+  Kokkos::parallel_for(
+      "point_borne_load_weights", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+        if (shape.node[0] < 0) return;
+        const PointWeights w = weightsOf(pts, p, liquid_m(pts.material(p)) != 0);
+        auto weight_i = weight_sv.access();
+        for (int a = 0; a < Family::kNodes; ++a) {
+          weight_i(shape.node[a], 0) += shape.value[a] * w.mixture;
+          weight_i(shape.node[a], 1) += shape.value[a] * w.liquid;
+        }
+      });
+  KE::contribute(fields.weight_i, weight_sv);
+}
+
+template <class Family>
+void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
+                const Kokkos::View<const int*, MemSpace>& liquid_m,
+                const BoundaryGradientFields& boundary, PointBorneLoadFields& fields) {
+  const MaterialPoints pts = points;
+  const auto load_i = fields.load_i;
+  const auto weight_i = fields.weight_i;
+  const auto gradient_i = boundary.mass_gradient_i;
+  auto spread_sv = KE::create_scatter_view(fields.spread_i);
+  Kokkos::parallel_for(
+      "point_borne_load_spread", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+        if (shape.node[0] < 0) return;
+        const PointWeights w = weightsOf(pts, p, liquid_m(pts.material(p)) != 0);
+        // the point's share of its nodes' loads, and its outward normal (4.51 interpolated)
+        Real share[2 * kDim] = {0, 0, 0, 0};
+        Real gradient[kDim] = {0, 0};
+        bool loaded = false;
+        for (int a = 0; a < Family::kNodes; ++a) {
+          const int i = shape.node[a];
+          for (int d = 0; d < kDim; ++d) gradient[d] += shape.value[a] * gradient_i(i, d);
+          const Real to_mixture =
+              weight_i(i, 0) > 0 ? shape.value[a] * w.mixture / weight_i(i, 0) : 0;
+          const Real to_liquid =
+              weight_i(i, 1) > 0 ? shape.value[a] * w.liquid / weight_i(i, 1) : 0;
+          for (int d = 0; d < kDim; ++d) {
+            share[d] += to_mixture * load_i(i, d);
+            share[kDim + d] += to_liquid * load_i(i, kDim + d);
+          }
+          for (int c = 0; c < 2 * kDim; ++c) loaded = loaded || load_i(i, c) != 0;
+        }
+        if (!loaded) return;
+        Real normal[kDim];
+        outwardNormalOfMassGradient(gradient, normal);
+        const Real reach = pointEdgeReach(pts.volume(p));
+        auto spread_i = spread_sv.access();
+        for (int a = 0; a < Family::kNodes; ++a) {
+          // N_j(x_p + l n) to first order: partition of unity kept (sum grad N_j = 0)
+          const Real at_edge = shape.value[a] + reach * (normal[0] * shape.gradient[a][0] +
+                                                         normal[1] * shape.gradient[a][1]);
+          for (int c = 0; c < 2 * kDim; ++c) spread_i(shape.node[a], c) += at_edge * share[c];
+        }
+      });
+  KE::contribute(fields.spread_i, spread_sv);
+}
+
+}  // namespace
+
+void PointBorneLoadFields::allocate(int num_nodes) {
+  load_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_load_i", num_nodes);
+  weight_i = Kokkos::View<Real* [2], MemSpace>("point_borne_weight_i", num_nodes);
+  spread_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_spread_i", num_nodes);
+}
+
+void PointBorneLoadFields::zero(const ActiveNodes& active) {
+  const auto nodes = active.nodes();
+  const auto load = load_i, spread = spread_i;
+  const auto weight = weight_i;
+  Kokkos::parallel_for(
+      "zero_point_borne_loads", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int c = 0; c < 2 * kDim; ++c) load(i, c) = spread(i, c) = 0;
+        weight(i, 0) = weight(i, 1) = 0;
+      });
+}
+
+void mapPointBorneLoadWeights(const NodalLoads& loads, const MaterialPoints& points,
+                              const PointShapes& shapes,
+                              const Kokkos::View<const int*, MemSpace>& liquid_m,
+                              PointBorneLoadFields& fields) {
+  const auto node = loads.node;
+  const auto mixture = loads.mixture;
+  const auto liquid = loads.liquid;
+  const auto load_i = fields.load_i;
+  Kokkos::parallel_for(
+      "point_borne_loads_in", Kokkos::RangePolicy<ExecSpace>(0, loads.count()),
+      KOKKOS_LAMBDA(const int j) {  // each node once per list
+        for (int d = 0; d < kDim; ++d) {
+          load_i(node(j), d) = mixture(j, d);
+          load_i(node(j), kDim + d) = liquid(j, d);
+        }
+      });
+  withShapeFamily(shapes, [&](auto family) {
+    mapWeightsImpl<decltype(family)>(points, shapes, liquid_m, fields);
+  });
+}
+
+void spreadPointBorneLoads(const MaterialPoints& points, const PointShapes& shapes,
+                           const Kokkos::View<const int*, MemSpace>& liquid_m,
+                           const BoundaryGradientFields& boundary, PointBorneLoadFields& fields) {
+  withShapeFamily(shapes, [&](auto family) {
+    spreadImpl<decltype(family)>(points, shapes, liquid_m, boundary, fields);
+  });
+}
+
+void addPointBorneLoads(const PointBorneLoadFields& fields, const ActiveNodes& active,
+                        GridFields& grid) {
+  const auto nodes = active.nodes();
+  const auto spread_i = fields.spread_i;
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "add_point_borne_loads", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        if (!(g.mass_solid_i(i) > 0)) return;
+        for (int d = 0; d < kDim; ++d) {
+          g.force_mixture_i(i, d) += spread_i(i, d);
+          if (g.mass_liquid_intrinsic_i(i) > 0) g.force_liquid_i(i, d) += spread_i(i, kDim + d);
+        }
+      });
+}
+
+}  // namespace argine
