@@ -95,8 +95,9 @@ struct Deviations {
 
 Deviations settleBank(const std::string& loads) {
   const Deck deck = parseDeck(*Teuchos::getParametersFromYamlString(submergedBank(loads)), "");
-  const auto dir = std::filesystem::path(::testing::TempDir()) /
-                   ("argine_grid_surface_" + std::to_string(loads.size()));
+  const auto dir =
+      std::filesystem::path(::testing::TempDir()) /
+      (loads == "on free sides" ? "argine_grid_surface_sides" : "argine_grid_surface_points");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   RunOptions options;
