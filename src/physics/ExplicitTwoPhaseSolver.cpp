@@ -357,11 +357,8 @@ void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
   if (!hydraulic_loads_at_points_) return argine::addHydraulicLoads(hydraulic_.loads(), grid_);
   // through the points that carry the loaded nodes (PointBorneLoads.hpp)
   point_borne_loads_.zero(nodes_in_use_);
-  mapPointBorneLoadWeights(hydraulic_.loads(), points_, shapes_, table_.liquidCarrying(),
-                           point_borne_loads_);
-  if (exchange_) exchange_->sum({nodalField(point_borne_loads_.weight_i)});
-  spreadPointBorneLoads(points_, shapes_, table_.liquidCarrying(), boundary_fields_,
-                        point_borne_loads_);
+  spreadPointBorneLoads(hydraulic_.loads(), points_, shapes_, table_.liquidCarrying(),
+                        boundary_fields_, grid_, point_borne_loads_);
   if (exchange_) exchange_->sum({nodalField(point_borne_loads_.spread_i)});
   addPointBorneLoads(point_borne_loads_, nodes_in_use_, grid_);
 }

@@ -26,34 +26,16 @@ KOKKOS_INLINE_FUNCTION PointWeights weightsOf(const MaterialPoints& points, int 
 }
 
 template <class Family>
-void mapWeightsImpl(const MaterialPoints& points, const PointShapes& shapes,
-                    const Kokkos::View<const int*, MemSpace>& liquid_m,
-                    PointBorneLoadFields& fields) {
-  const MaterialPoints pts = points;
-  auto weight_sv = KE::create_scatter_view(fields.weight_i);
-  Kokkos::parallel_for(
-      "point_borne_load_weights", Kokkos::RangePolicy<ExecSpace>(0, points.count),
-      KOKKOS_LAMBDA(const int p) {
-        typename Family::Record scratch;
-        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
-        if (shape.node[0] < 0) return;
-        const PointWeights w = weightsOf(pts, p, liquid_m(pts.material(p)) != 0);
-        auto weight_i = weight_sv.access();
-        for (int a = 0; a < Family::kNodes; ++a) {
-          weight_i(shape.node[a], 0) += shape.value[a] * w.mixture;
-          weight_i(shape.node[a], 1) += shape.value[a] * w.liquid;
-        }
-      });
-  KE::contribute(fields.weight_i, weight_sv);
-}
-
-template <class Family>
 void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
                 const Kokkos::View<const int*, MemSpace>& liquid_m,
-                const BoundaryGradientFields& boundary, PointBorneLoadFields& fields) {
+                const BoundaryGradientFields& boundary, const GridFields& grid,
+                PointBorneLoadFields& fields) {
   const MaterialPoints pts = points;
   const auto load_i = fields.load_i;
-  const auto weight_i = fields.weight_i;
+  // the nodes' sums of the points' weights: the lumped masses of P2G, complete over the ranks
+  const auto mass_solid_i = grid.mass_solid_i;
+  const auto mass_liquid_i = grid.mass_liquid_i;
+  const auto volume_liquid_i = grid.volume_liquid_i;
   const auto gradient_i = boundary.mass_gradient_i;
   auto spread_sv = KE::create_scatter_view(fields.spread_i);
   Kokkos::parallel_for(
@@ -70,10 +52,10 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
         for (int a = 0; a < Family::kNodes; ++a) {
           const int i = shape.node[a];
           for (int d = 0; d < kDim; ++d) gradient[d] += shape.value[a] * gradient_i(i, d);
-          const Real to_mixture =
-              weight_i(i, 0) > 0 ? shape.value[a] * w.mixture / weight_i(i, 0) : 0;
+          const Real mixture_i = mass_solid_i(i) + mass_liquid_i(i);
+          const Real to_mixture = mixture_i > 0 ? shape.value[a] * w.mixture / mixture_i : 0;
           const Real to_liquid =
-              weight_i(i, 1) > 0 ? shape.value[a] * w.liquid / weight_i(i, 1) : 0;
+              volume_liquid_i(i) > 0 ? shape.value[a] * w.liquid / volume_liquid_i(i) : 0;
           for (int d = 0; d < kDim; ++d) {
             share[d] += to_mixture * load_i(i, d);
             share[kDim + d] += to_liquid * load_i(i, kDim + d);
@@ -99,27 +81,25 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
 
 void PointBorneLoadFields::allocate(int num_nodes) {
   load_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_load_i", num_nodes);
-  weight_i = Kokkos::View<Real* [2], MemSpace>("point_borne_weight_i", num_nodes);
   spread_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_spread_i", num_nodes);
 }
 
 void PointBorneLoadFields::zero(const ActiveNodes& active) {
   const auto nodes = active.nodes();
   const auto load = load_i, spread = spread_i;
-  const auto weight = weight_i;
   Kokkos::parallel_for(
       "zero_point_borne_loads", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
         const int i = nodes(j);
         for (int c = 0; c < 2 * kDim; ++c) load(i, c) = spread(i, c) = 0;
-        weight(i, 0) = weight(i, 1) = 0;
       });
 }
 
-void mapPointBorneLoadWeights(const NodalLoads& loads, const MaterialPoints& points,
-                              const PointShapes& shapes,
-                              const Kokkos::View<const int*, MemSpace>& liquid_m,
-                              PointBorneLoadFields& fields) {
+void spreadPointBorneLoads(const NodalLoads& loads, const MaterialPoints& points,
+                           const PointShapes& shapes,
+                           const Kokkos::View<const int*, MemSpace>& liquid_m,
+                           const BoundaryGradientFields& boundary, const GridFields& grid,
+                           PointBorneLoadFields& fields) {
   const auto node = loads.node;
   const auto mixture = loads.mixture;
   const auto liquid = loads.liquid;
@@ -133,15 +113,7 @@ void mapPointBorneLoadWeights(const NodalLoads& loads, const MaterialPoints& poi
         }
       });
   withShapeFamily(shapes, [&](auto family) {
-    mapWeightsImpl<decltype(family)>(points, shapes, liquid_m, fields);
-  });
-}
-
-void spreadPointBorneLoads(const MaterialPoints& points, const PointShapes& shapes,
-                           const Kokkos::View<const int*, MemSpace>& liquid_m,
-                           const BoundaryGradientFields& boundary, PointBorneLoadFields& fields) {
-  withShapeFamily(shapes, [&](auto family) {
-    spreadImpl<decltype(family)>(points, shapes, liquid_m, boundary, fields);
+    spreadImpl<decltype(family)>(points, shapes, liquid_m, boundary, grid, fields);
   });
 }
 

@@ -18,9 +18,11 @@
 /// normal (4.51): N_j(x_p + l n) = N_j(x_p) + l n . grad N_j(x_p), l = sqrt(V_p) / 2. Both
 /// weights sum to one, so each load's resultant is kept to round-off.
 ///
+/// The nodes' sums of the weights are the lumped masses of the step's P2G (M_S + M_L and
+/// the liquid-carrying points' sum N V, GridFields), already complete over the ranks.
 /// Several ranks: the plan is replicated, so every rank holds each node's whole load; the
-/// two point sums are completed at the shared nodes between the passes (plain sums, also
-/// with `Reproducible Sums`).
+/// spread loads are summed at the shared nodes afterwards (a plain sum, also under
+/// `Reproducible Sums`).
 
 #include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/core/Types.hpp"
@@ -37,8 +39,6 @@ struct PointShapes;
 struct PointBorneLoadFields {
   /// The planned load of each node: mixture (f^ext) components, then liquid (f_L^ext) (N).
   Kokkos::View<Real * [2 * kDim], MemSpace> load_i;
-  /// sum_p N_i w_p: the mixture mass (kg), then the liquid-carrying points' volume (m^3).
-  Kokkos::View<Real* [2], MemSpace> weight_i;
   /// The loads as the points pass them on, laid out as load_i (N).
   Kokkos::View<Real * [2 * kDim], MemSpace> spread_i;
   void allocate(int num_nodes);
@@ -46,19 +46,16 @@ struct PointBorneLoadFields {
   void zero(const ActiveNodes& nodes);
 };
 
-/// First pass: the planned `loads` into fields.load_i, and the points' weights into
-/// fields.weight_i (zeroed on the active nodes before). Sum weight_i over the ranks after.
-void mapPointBorneLoadWeights(const NodalLoads& loads, const MaterialPoints& points,
-                              const PointShapes& shapes,
-                              const Kokkos::View<const int*, MemSpace>& liquid_m,
-                              PointBorneLoadFields& fields);
-
-/// Second pass: each point's share of its nodes' loads, passed on with its shape functions
-/// at its outer edge (outward normal from `boundary`.mass_gradient_i, complete over the
-/// ranks) into fields.spread_i. Sum spread_i over the ranks after.
-void spreadPointBorneLoads(const MaterialPoints& points, const PointShapes& shapes,
+/// The planned `loads` into fields.load_i, and each point's share of its nodes' loads
+/// (by its part of the nodes' lumped masses in `grid`), passed on with its shape functions at
+/// its outer edge (outward normal from `boundary`.mass_gradient_i, complete over the ranks)
+/// into fields.spread_i; zero `fields` on the active nodes first. Sum spread_i over the
+/// ranks after.
+void spreadPointBorneLoads(const NodalLoads& loads, const MaterialPoints& points,
+                           const PointShapes& shapes,
                            const Kokkos::View<const int*, MemSpace>& liquid_m,
-                           const BoundaryGradientFields& boundary, PointBorneLoadFields& fields);
+                           const BoundaryGradientFields& boundary, const GridFields& grid,
+                           PointBorneLoadFields& fields);
 
 /// Adds spread_i to f^ext and f_L^ext of the active nodes that carry solid mass (the liquid
 /// part where they carry liquid), as addHydraulicLoads does with the planned loads.
