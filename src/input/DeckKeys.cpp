@@ -720,7 +720,8 @@ ListSchema stageKeys() {
                             "v_L - v_S as mapped (doc/theory.md Sec. 5.1)")
                 .byDefault(std::string("velocity"))
                 .when("Solver", {"explicit", "quasi-static"}));
-  stage.add(KeySpec::choice("Hydraulic Loads", Words{"on free sides", "at boundary points"},
+  stage.add(KeySpec::choice("Hydraulic Loads",
+                            Words{kHydraulicLoadsByMesh, "on free sides", "at boundary points"},
                             "where the pressure of total head and pressure series conditions "
                             "loads the soil: on free sides: integrated along the free sides "
                             "and given to their end nodes (the thesis), right where the mesh "
@@ -728,8 +729,11 @@ ListSchema stageKeys() {
                             "through the points that carry the node to their shape functions "
                             "at their outer edge, for a surface that cuts through its cells "
                             "(a soil region in a rectangle grid: on free sides put +70 kPa "
-                            "on a surface point of the grid levee; doc/theory.md Sec. 5.5)")
-                .byDefault(std::string("on free sides"))
+                            "on a surface point of the grid levee; doc/theory.md Sec. 5.5); "
+                            "by mesh: at boundary points on a rectangle with Regions, on free "
+                            "sides on every other mesh (whose elements follow the soil's "
+                            "outline)")
+                .byDefault(std::string(kHydraulicLoadsByMesh))
                 .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));

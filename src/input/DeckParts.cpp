@@ -432,7 +432,13 @@ MaterialSpec parseMaterial(const DeckSection& material) {
   return spec;
 }
 
-StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
+bool hydraulicLoadsAtPoints(const MeshSpec& mesh) {
+  return mesh.generate && mesh.generator.kind == GeneratorSpec::Kind::Rectangle &&
+         !mesh.generator.regions.empty();
+}
+
+StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
+  const ShapeFamily shapes = mesh.shape_functions;
   StageSpec spec;
   spec.name = stage.name();
   spec.solver = deckValue(kSolverWords, stage.word("Solver"));
@@ -444,7 +450,10 @@ StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes) {
                                 : LocalDampingForm::StartOfStep;
   spec.fixity_keeps_relative_velocity =
       stage.word("Liquid At Solid Fixities") == "relative velocity";
-  spec.hydraulic_loads_at_points = stage.word("Hydraulic Loads") == "at boundary points";
+  const std::string hydraulic_loads = stage.word("Hydraulic Loads");
+  spec.hydraulic_loads_at_points = hydraulic_loads == kHydraulicLoadsByMesh
+                                       ? hydraulicLoadsAtPoints(mesh)
+                                       : hydraulic_loads == "at boundary points";
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

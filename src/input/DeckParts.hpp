@@ -10,9 +10,14 @@ namespace argine::input_detail {
 MeshSpec parseMesh(const DeckSection& mesh);
 /// One entry of `Materials` -> MaterialSpec (degrees -> radians, kappa <-> k_sat).
 MaterialSpec parseMaterial(const DeckSection& material);
-/// One entry of `Stages` -> StageSpec; `shapes` (the mesh's) decides the transfer a stage
-/// does not name (transferForShapes).
-StageSpec parseStage(const DeckSection& stage, ShapeFamily shapes);
+/// One entry of `Stages` -> StageSpec; `mesh` decides what a stage does not name: the
+/// transfer by its shape functions (transferForShapes), the hydraulic loads by whether its
+/// elements follow the soil's outline (hydraulicLoadsAtPoints).
+StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh);
+/// `Hydraulic Loads: by mesh`: at the boundary points where the soil's surface cuts through
+/// the cells (a generated rectangle with Regions: the grid stays structured and the regions
+/// are seeded inside it), on the free sides where the elements follow the soil's outline.
+bool hydraulicLoadsAtPoints(const MeshSpec& mesh);
 /// `Output` -> OutputSpec.
 OutputSpec parseOutput(const DeckSection& output);
 

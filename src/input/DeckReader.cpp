@@ -150,7 +150,7 @@ Deck parseDeck(const Teuchos::ParameterList& parameters, const std::string& deck
   for (const auto& material : top.entries("Materials"))
     deck.materials.push_back(parseMaterial(material));
   for (const auto& stage : top.entries("Stages"))
-    deck.stages.push_back(parseStage(stage, deck.mesh.shape_functions));
+    deck.stages.push_back(parseStage(stage, deck.mesh));
   deck.output = parseOutput(top.section("Output"));
   deck.initialisation = parseInitialisation(top.section("Initialisation"));  // issue P4
   deck.probes = parseProbes(top.section("Probes"));                          // issue P4

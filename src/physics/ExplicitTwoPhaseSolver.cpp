@@ -225,6 +225,7 @@ void ExplicitTwoPhaseSolver::setReproducibleSums(bool on) {
   averaging_.compensateSums(on);
   head_stabilisation_.compensateSums(on);
   element_seepage_.compensateSums(on);
+  point_borne_loads_.compensateSums(on);
 }
 
 Kokkos::View<const int*, MemSpace> ExplicitTwoPhaseSolver::alwaysActiveNodes() const {
@@ -359,7 +360,7 @@ void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
   point_borne_loads_.zero(nodes_in_use_);
   spreadPointBorneLoads(hydraulic_.loads(), points_, shapes_, table_.liquidCarrying(),
                         boundary_fields_, grid_, point_borne_loads_);
-  if (exchange_) exchange_->sum({nodalField(point_borne_loads_.spread_i)});
+  sumPointBorneLoadsAtSharedNodes(exchange_.get(), nodes_in_use_, point_borne_loads_);
   addPointBorneLoads(point_borne_loads_, nodes_in_use_, grid_);
 }
 

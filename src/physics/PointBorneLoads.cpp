@@ -1,7 +1,10 @@
 #include "argine/physics/PointBorneLoads.hpp"
 
 #include <Kokkos_ScatterView.hpp>
+#include <string>
+#include <vector>
 
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
@@ -25,13 +28,15 @@ KOKKOS_INLINE_FUNCTION PointWeights weightsOf(const MaterialPoints& points, int 
   return {points.mass_solid(p) + (wet ? points.mass_liquid(p) : 0), wet ? points.volume(p) : 0};
 }
 
-template <class Family>
+template <class Family, bool kCompensated>
 void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
                 const Kokkos::View<const int*, MemSpace>& liquid_m,
                 const BoundaryGradientFields& boundary, const GridFields& grid,
                 PointBorneLoadFields& fields) {
   const MaterialPoints pts = points;
   const auto load_i = fields.load_i;
+  const auto hi = fields.spread_i;
+  const auto lo = fields.spread_lo;
   // the nodes' sums of the points' weights: the lumped masses of P2G, complete over the ranks
   const auto mass_solid_i = grid.mass_solid_i;
   const auto mass_liquid_i = grid.mass_liquid_i;
@@ -71,7 +76,8 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
           // N_j(x_p + l n) to first order: partition of unity kept (sum grad N_j = 0)
           const Real at_edge = shape.value[a] + reach * (normal[0] * shape.gradient[a][0] +
                                                          normal[1] * shape.gradient[a][1]);
-          for (int c = 0; c < 2 * kDim; ++c) spread_i(shape.node[a], c) += at_edge * share[c];
+          for (int c = 0; c < 2 * kDim; ++c)
+            addToNode<kCompensated>(spread_i, hi, lo, shape.node[a], c, at_edge * share[c]);
         }
       });
   KE::contribute(fields.spread_i, spread_sv);
@@ -81,17 +87,34 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
 
 void PointBorneLoadFields::allocate(int num_nodes) {
   load_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_load_i", num_nodes);
-  spread_i = Kokkos::View<Real * [2 * kDim], MemSpace>("point_borne_spread_i", num_nodes);
+  spread_i = Kokkos::View<Real**, MemSpace>("point_borne_spread_i", num_nodes, 2 * kDim);
+  compensateSums(compensated_);
+}
+
+void PointBorneLoadFields::compensateSums(bool on) {
+  compensated_ = on;
+  const int nodes = on ? static_cast<int>(spread_i.extent(0)) : 0;
+  for (int k = 0; k < kLowParts; ++k)
+    if (static_cast<int>(spread_lo[k].extent(0)) != nodes)
+      spread_lo[k] = Kokkos::View<Real**, MemSpace>("point_borne_spread_lo" + std::to_string(k),
+                                                    nodes, 2 * kDim);
 }
 
 void PointBorneLoadFields::zero(const ActiveNodes& active) {
   const auto nodes = active.nodes();
-  const auto load = load_i, spread = spread_i;
+  const auto load = load_i;
+  const auto spread = spread_i;
+  const auto lo = spread_lo;
+  const bool compensated = compensated_;
   Kokkos::parallel_for(
       "zero_point_borne_loads", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
         const int i = nodes(j);
-        for (int c = 0; c < 2 * kDim; ++c) load(i, c) = spread(i, c) = 0;
+        for (int c = 0; c < 2 * kDim; ++c) {
+          load(i, c) = spread(i, c) = 0;
+          if (compensated)
+            for (int k = 0; k < kLowParts; ++k) lo[k](i, c) = 0;
+        }
       });
 }
 
@@ -113,8 +136,24 @@ void spreadPointBorneLoads(const NodalLoads& loads, const MaterialPoints& points
         }
       });
   withShapeFamily(shapes, [&](auto family) {
-    spreadImpl<decltype(family)>(points, shapes, liquid_m, boundary, grid, fields);
+    using Family = decltype(family);
+    fields.compensated()
+        ? spreadImpl<Family, true>(points, shapes, liquid_m, boundary, grid, fields)
+        : spreadImpl<Family, false>(points, shapes, liquid_m, boundary, grid, fields);
   });
+}
+
+void sumPointBorneLoadsAtSharedNodes(NodalExchange* exchange, const ActiveNodes& active,
+                                     PointBorneLoadFields& fields) {
+  if (exchange) {
+    if (fields.compensated()) {
+      std::vector<NodalFieldRef> lo_refs;
+      for (int k = 0; k < kLowParts; ++k) lo_refs.push_back(nodalField(fields.spread_lo[k]));
+      exchange->sumCompensated({nodalField(fields.spread_i)}, lo_refs);
+    } else
+      exchange->sum({nodalField(fields.spread_i)});
+  }
+  if (fields.compensated()) foldCompensatedSums(active, fields.spread_i, fields.spread_lo);
 }
 
 void addPointBorneLoads(const PointBorneLoadFields& fields, const ActiveNodes& active,

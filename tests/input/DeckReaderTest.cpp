@@ -231,7 +231,7 @@ TEST(DeckReader, SchemaDefaultsEqualStructDefaults) {
   EXPECT_EQ(stage.local_damping_form, LocalDampingForm::StartOfStep);  // the default
   EXPECT_EQ(stage.local_damping_form, fresh_stage.local_damping_form);
   EXPECT_FALSE(stage.fixity_keeps_relative_velocity);  // the default: the thesis
-  EXPECT_FALSE(stage.hydraulic_loads_at_points);       // the default: the thesis' free sides
+  EXPECT_FALSE(stage.hydraulic_loads_at_points);       // by mesh: a rectangle without Regions
   EXPECT_EQ(stage.mass_scaling, fresh_stage.mass_scaling);
   EXPECT_EQ(stage.output_interval, fresh_stage.output_interval);
   EXPECT_EQ(stage.reset_displacements, fresh_stage.reset_displacements);
@@ -405,6 +405,14 @@ TEST(DeckReader, RectangleRegionsAreReadAndChecked) {
   EXPECT_EQ(generator.regions[0].block, "soil");
   EXPECT_EQ(generator.regions[1].block, "crest");
   EXPECT_EQ(generator.regions[0].vertices[0], (std::array<Real, 2>{1.0, 0.0}));
+  // the soil's surface cuts through the grid's cells: hydraulic loads through the boundary
+  // points unless the stage names the free sides (`Hydraulic Loads: by mesh`)
+  EXPECT_TRUE(deck.stages[0].hydraulic_loads_at_points);
+  EXPECT_FALSE(
+      parseText(replaced(withRegions("", "[0, 0, 0, 0.5, 1, 0.5, 1, 0]"), "Solver: explicit",
+                         "Solver: explicit\n      Hydraulic Loads: on free sides"))
+          .stages[0]
+          .hydraulic_loads_at_points);
   const std::string where = "Mesh/Generate/Regions/soil/Vertices (m)";
   expectDeckError(withRegions("", "[0, 0, 1.2, 0, 0, 0.5]"), where,
                   "vertex 2 (1.2, 0) lies outside the box");

@@ -298,7 +298,8 @@ struct StageSpec {
   bool fixity_keeps_relative_velocity = false;
   /// `Hydraulic Loads`: `on free sides` (false, the thesis) gives each free side's pressure
   /// load to its end nodes; `at boundary points` (true) passes it through the points that
-  /// carry those nodes (physics/PointBorneLoads.hpp).
+  /// carry those nodes (physics/PointBorneLoads.hpp); `by mesh` (the default): true on a
+  /// rectangle with Regions, false on meshes that follow the soil's outline.
   bool hydraulic_loads_at_points = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage

@@ -84,6 +84,9 @@ inline constexpr DeckWord<TransferScheme> kTransferSchemeWords[] = {
 /// The `Velocity Transfer` word (and default) that leaves the choice to the mesh's shape
 /// functions (transferForShapes).
 inline constexpr const char* kTransferByShapeFunctions = "by shape functions";
+/// The `Hydraulic Loads` word (and default) that leaves the choice to the mesh
+/// (hydraulicLoadsAtPoints in input/DeckParts).
+inline constexpr const char* kHydraulicLoadsByMesh = "by mesh";
 
 inline constexpr DeckWord<CriterionKind> kCriterionWords[] = {
     {"cfl dry", CriterionKind::CflDry},

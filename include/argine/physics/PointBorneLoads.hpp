@@ -21,15 +21,17 @@
 /// The nodes' sums of the weights are the lumped masses of the step's P2G (M_S + M_L and
 /// the liquid-carrying points' sum N V, GridFields), already complete over the ranks.
 /// Several ranks: the plan is replicated, so every rank holds each node's whole load; the
-/// spread loads are summed at the shared nodes afterwards (a plain sum, also under
-/// `Reproducible Sums`).
+/// spread loads are summed at the shared nodes afterwards, binned under `Reproducible Sums`
+/// (transfer/CompensatedSum.hpp) so that 1 and N ranks give the same bits.
 
 #include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/core/Types.hpp"
+#include "argine/transfer/CompensatedSum.hpp"
 
 namespace argine {
 
 class ActiveNodes;
+class NodalExchange;
 struct BoundaryGradientFields;
 struct GridFields;
 struct MaterialPoints;
@@ -40,22 +42,35 @@ struct PointBorneLoadFields {
   /// The planned load of each node: mixture (f^ext) components, then liquid (f_L^ext) (N).
   Kokkos::View<Real * [2 * kDim], MemSpace> load_i;
   /// The loads as the points pass them on, laid out as load_i (N).
-  Kokkos::View<Real * [2 * kDim], MemSpace> spread_i;
+  Kokkos::View<Real**, MemSpace> spread_i;
+  /// The low parts of spread_i's sums when they are compensated (empty otherwise).
+  LowParts<Kokkos::View<Real**, MemSpace>> spread_lo;
   void allocate(int num_nodes);
+  /// Reproducible (binned) sums into spread_i from now on, or plain ones.
+  void compensateSums(bool on);
+  bool compensated() const { return compensated_; }
   /// Zero on the listed nodes only.
   void zero(const ActiveNodes& nodes);
+
+ private:
+  bool compensated_ = false;
 };
 
 /// The planned `loads` into fields.load_i, and each point's share of its nodes' loads
 /// (by its part of the nodes' lumped masses in `grid`), passed on with its shape functions at
 /// its outer edge (outward normal from `boundary`.mass_gradient_i, complete over the ranks)
 /// into fields.spread_i; zero `fields` on the active nodes first. Sum spread_i over the
-/// ranks after.
+/// ranks after (sumPointBorneLoadsAtSharedNodes).
 void spreadPointBorneLoads(const NodalLoads& loads, const MaterialPoints& points,
                            const PointShapes& shapes,
                            const Kokkos::View<const int*, MemSpace>& liquid_m,
                            const BoundaryGradientFields& boundary, const GridFields& grid,
                            PointBorneLoadFields& fields);
+
+/// Completes spread_i: summed over the ranks at the shared nodes (`exchange`, null on one
+/// rank) and, when compensated, folded on the active nodes.
+void sumPointBorneLoadsAtSharedNodes(NodalExchange* exchange, const ActiveNodes& active,
+                                     PointBorneLoadFields& fields);
 
 /// Adds spread_i to f^ext and f_L^ext of the active nodes that carry solid mass (the liquid
 /// part where they carry liquid), as addHydraulicLoads does with the planned loads.
