@@ -301,32 +301,41 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
 /// The cell's four corners in the order of the stencil's nodes (the other five have no
 /// weight at the centre), each with N = 1/2 1/2 and dN/dx = (-+1/h) 1/2, the products of
 /// cellCentreWeights1D's weights: the same bits as the sum over the nine nodes.
+///
+/// The six sums in two Lanes, each lane one sum and its terms in corner order, as the scalar
+/// sums had them (their spills and moves between registers were half the strain kernel):
+/// `weighted` (w_x, w_y, c, -) += N (w_x, w_y, c, c) and `sloped` (w . grad N, c dN/dx,
+/// c dN/dy, -) += (w_x dN/dx + w_y dN/dy, c dN/dx + 0, c dN/dy + 0, 0). The + 0 turns a -0
+/// term into +0, which leaves the sum as it was (it starts at +0 and never becomes -0).
 template <class Values>
 KOKKOS_INLINE_FUNCTION Real cellCentreAdvectiveFlux(const TensorShape& t, const GridStencil& s,
                                                     const Values& values_i) {
+  static_assert(kReadStrainVelocitySolid == 0 && kReadStrainVelocityLiquid == kDim &&
+                    kReadStrainLiquidContent == kLanes,
+                "v_S and v_L fill block 0 of a read row, the liquid content opens block 1");
   const CellCentre1D centre_x = cellCentre1D(t, 0), centre_y = cellCentre1D(t, 1);
   const Real half = 0.5;
-  const Real sx[2] = {-centre_x.inverse_h, centre_x.inverse_h};
-  const Real sy[2] = {-centre_y.inverse_h, centre_y.inverse_h};
-  Real w[kDim] = {0, 0}, content = 0, divergence = 0, gradient[kDim] = {0, 0};
+  const Real N = half * half;
+  // dN/dx of the cell's lower and upper lines, dN/dy of its lower and upper rows
+  const Real gx[2] = {-centre_x.inverse_h * half, centre_x.inverse_h * half};
+  const Real gy[2] = {half * -centre_y.inverse_h, half * centre_y.inverse_h};
+  const Lanes zero = {};
+  Lanes weighted = {}, sloped = {};
   for (int j = 0; j < 2; ++j) {
     for (int i = 0; i < 2; ++i) {
       const int a = centre_x.slot + i + kGridStencil * (centre_y.slot + j);
-      const Real N = half * half;
-      const Real gx = sx[i] * half, gy = half * sy[j];
       const Real* values = &values_i(s.node[a], 0);
-      const Real w_x = values[kReadStrainVelocityLiquid] - values[kReadStrainVelocitySolid];
-      const Real w_y = values[kReadStrainVelocityLiquid + 1] - values[kReadStrainVelocitySolid + 1];
-      const Real c = values[kReadStrainLiquidContent];
-      w[0] += N * w_x;
-      w[1] += N * w_y;
-      content += N * c;
-      divergence += w_x * gx + w_y * gy;
-      gradient[0] += c * gx;
-      gradient[1] += c * gy;
+      const Lanes velocities = loadBlock(values);  // v_S, v_L
+      const Lanes w = __builtin_shufflevector(velocities, velocities, 2, 3, 2, 3) - velocities;
+      const Lanes content = loadBlock(values + kReadStrainLiquidContent);   // lane 0
+      const Lanes terms = __builtin_shufflevector(w, content, 0, 1, 4, 4);  // w_x, w_y, c, c
+      weighted += N * terms;
+      const Lanes products = terms * lanesOf(gx[i], gy[j], gx[i], gy[j]);
+      sloped += __builtin_shufflevector(products, zero, 0, 2, 3, 4) +
+                __builtin_shufflevector(products, zero, 1, 4, 4, 4);
     }
   }
-  return content * divergence + gradient[0] * w[0] + gradient[1] * w[1];
+  return weighted[2] * sloped[0] + sloped[1] * weighted[0] + sloped[2] * weighted[1];
 }
 
 /// The strain, spin, displacement and liquid increments of point p, located, `wet` or dry
@@ -384,14 +393,22 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
   const Real flux = wet ? dt * cellCentreAdvectiveFlux(t, s, values_i) : 0;
   // A point alone exchanges no liquid (strainIncrementsAt): every node of weight is its
   // alone (its liquid volume no more than the point's own N V) and unconditioned.
+  // The stencil's centre node first: it always has weight (the middle slot of both 1D
+  // stencils, also folded), and in a body of points it is shared, which decides at once; the
+  // first node has no weight for some points and weight for others, a branch that went either
+  // way. The same test of every node, in another order.
   bool alone = wet;
   if (wet) {
     const Real volume = v.volume_p(p);
-    for (int a = 0; a < kGridStencilNodes && alone; ++a) {
+    const auto alone_at = [&](int a) {
       const Real own = s.N[a] * volume;
-      alone = s.N[a] == 0 || (values_i(s.node[a], kReadStrainLiquidVolume) <= own &&
-                              values_i(s.node[a], kReadStrainConditioned) == 0);
-    }
+      return s.N[a] == 0 || (values_i(s.node[a], kReadStrainLiquidVolume) <= own &&
+                             values_i(s.node[a], kReadStrainConditioned) == 0);
+    };
+    constexpr int kCentre = kGridStencilNodes / 2;
+    alone = alone_at(kCentre);
+    for (int a = 0; a < kGridStencilNodes && alone; ++a)
+      if (a != kCentre) alone = alone_at(a);
   }
   store(rates.liquid_divergence_increment_p, p, alone ? dt * (L[0][0] + L[1][1]) : dt * divergence);
   store(rates.content_flux_divergence_increment_p, p, alone ? 0 : flux);
