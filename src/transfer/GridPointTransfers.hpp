@@ -304,9 +304,10 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
 ///
 /// The six sums in two Lanes, each lane one sum and its terms in corner order, as the scalar
 /// sums had them (their spills and moves between registers were half the strain kernel):
-/// `weighted` (w_x, w_y, c, -) += N (w_x, w_y, c, c) and `sloped` (w . grad N, c dN/dx,
-/// c dN/dy, -) += (w_x dN/dx + w_y dN/dy, c dN/dx + 0, c dN/dy + 0, 0). The + 0 turns a -0
-/// term into +0, which leaves the sum as it was (it starts at +0 and never becomes -0).
+/// `weighted` (w_x, w_y, c, -) += N (w_x, w_y, c, c) and `sloped` (w . grad N, -, c dN/dx,
+/// c dN/dy) += (w_x dN/dx + w_y dN/dy, -, c dN/dx + 0, c dN/dy + 0): the products' vector
+/// plus its lane 1 moved to lane 0 (one in-lane swap and a blend with zeros). The + 0 turns a
+/// -0 term into +0, which leaves the sum as it was (it starts at +0 and never becomes -0).
 template <class Values>
 KOKKOS_INLINE_FUNCTION Real cellCentreAdvectiveFlux(const TensorShape& t, const GridStencil& s,
                                                     const Values& values_i) {
@@ -331,11 +332,10 @@ KOKKOS_INLINE_FUNCTION Real cellCentreAdvectiveFlux(const TensorShape& t, const 
       const Lanes terms = __builtin_shufflevector(w, content, 0, 1, 4, 4);  // w_x, w_y, c, c
       weighted += N * terms;
       const Lanes products = terms * lanesOf(gx[i], gy[j], gx[i], gy[j]);
-      sloped += __builtin_shufflevector(products, zero, 0, 2, 3, 4) +
-                __builtin_shufflevector(products, zero, 1, 4, 4, 4);
+      sloped += products + __builtin_shufflevector(products, zero, 1, 5, 6, 7);
     }
   }
-  return weighted[2] * sloped[0] + sloped[1] * weighted[0] + sloped[2] * weighted[1];
+  return weighted[2] * sloped[0] + sloped[2] * weighted[0] + sloped[3] * weighted[1];
 }
 
 /// The strain, spin, displacement and liquid increments of point p, located, `wet` or dry
