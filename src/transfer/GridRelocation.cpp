@@ -16,6 +16,7 @@ RelocationCounts relocateOnGrid(const Mesh& mesh, Real tolerance,
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto position_p = points.position;
+  const auto displacement_p = points.displacement;
   const auto volume0_p = points.initial_volume;
   // The locator's tolerance (local coordinates, 2 per cell) in cells.
   const Real slack = 0.5 * tolerance;
@@ -24,12 +25,24 @@ RelocationCounts relocateOnGrid(const Mesh& mesh, Real tolerance,
   Kokkos::parallel_reduce(
       "relocate_on_grid", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, int& outside, int& moved, int& changed) {
-        const Real x[kDim] = {position_p(p, 0), position_p(p, 1)};
-        Real xi[kDim];            // cells from the grid's origin
+        // The point kept clear of the grid's edges first (clearOfGridEdges, as
+        // keepPointsClearOfGridEdges does on the element route), in the same pass: its xi is
+        // the relocation's unless it moved (then from the new position, as a second pass would
+        // compute it).
+        const Real l = gimpHalfWidth(volume0_p(p), grid);
+        Real xi[kDim];  // cells from the grid's origin
+        for (int d = 0; d < kDim; ++d) {
+          xi[d] = (position_p(p, d) - grid.origin[d]) / grid.spacing[d];
+          const Real kept = clearOfGridEdges(xi[d], grid.cells[d], l);
+          if (kept == xi[d]) continue;  // (not for NaN: as keepPointsClearOfGridEdges)
+          const Real shift = (kept - xi[d]) * grid.spacing[d];
+          position_p(p, d) += shift;
+          displacement_p(p, d) += shift;
+          xi[d] = (position_p(p, d) - grid.origin[d]) / grid.spacing[d];
+        }
         int cell[kDim] = {0, 0};  // (set when inside)
         bool inside = true;
         for (int d = 0; d < kDim; ++d) {
-          xi[d] = (x[d] - grid.origin[d]) / grid.spacing[d];
           // within the tolerance of the grid (false for NaN)
           inside = inside && xi[d] >= -slack && xi[d] <= grid.cells[d] + slack;
           if (!inside) break;
@@ -53,8 +66,7 @@ RelocationCounts relocateOnGrid(const Mesh& mesh, Real tolerance,
         // Quad4 local coordinates (-1 at the cell's lower line, 1 at its upper)
         for (int d = 0; d < kDim; ++d) local_p(p, d) = 2 * (xi[d] - cell[d]) - 1;
         const int old_x = shape.line[0][0], old_y = shape.line[1][0];
-        const Real half_width =
-            family == ShapeFamily::Gimp ? gimpHalfWidth(volume0_p(p), grid) : Real(0);
+        const Real half_width = family == ShapeFamily::Gimp ? l : Real(0);
         for (int d = 0; d < kDim; ++d) {
           GridStencil1D s;
           gridStencil1D(family, xi[d], grid.cells[d], grid.spacing[d], half_width, s);

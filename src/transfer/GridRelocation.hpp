@@ -10,8 +10,10 @@
 
 namespace argine {
 
-/// Relocates every point of `points` on mesh.structured: element (-1 outside the grid, or in
-/// a cell without an element of cell_element), local coordinates and tensor shape.
+/// Relocates every point of `points` on mesh.structured: first keeps it clear of the grid's
+/// edges (clearOfGridEdges: position and displacement moved together), then element (-1
+/// outside the grid, or in a cell without an element of cell_element), local coordinates and
+/// tensor shape.
 /// `tolerance`: the locator's containment tolerance (local coordinates); a point on the line
 /// between two cells goes to the lower one, as PointLocator chooses (the lowest element
 /// index). Counts the lost points and, as changed_element, the points whose element or

@@ -291,11 +291,12 @@ RelocationCounts relocateAndEvaluateShapes(const Mesh& mesh, const PointLocator&
   if (shapes.count() != points.count) shapes.allocate(points.count);
   shapes.type = mesh.type;
   if (shapes.onGrid()) {
-    keepPointsClearOfGridEdges(mesh.structured, points);
     // By index arithmetic where the elements are the grid's cells (the transfers read only
-    // the tensor shapes), else by the element route: the element's linear shapes, plus:
+    // the tensor shapes; it keeps the points clear of the grid's edges in the same pass), else
+    // by the element route: the element's linear shapes, plus:
     if (maps.cell_element.extent(0) > 0)
       return relocateOnGrid(mesh, locator.tolerance(), maps.cell_element, points, shapes);
+    keepPointsClearOfGridEdges(mesh.structured, points);
     RelocationCounts counts = withShape(mesh.type, [&](auto shape) {
       return relocate<decltype(shape)>(mesh, locator, AffineElementMaps{}, points, shapes);
     });
