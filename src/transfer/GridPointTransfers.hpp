@@ -354,9 +354,10 @@ KOKKOS_INLINE_FUNCTION void gridStrainIncrements(const TensorShape& t, int row, 
   // wet: the divergence sum (v_L . grad N) node by node (lane 2: v_L,x dN/dx + v_L,y dN/dy)
   Lanes divergences = {};
   const auto gather = [&](auto with_liquid) {
-  // One node an iteration: unrolled, the compiler computes all nine nodes' products ahead
-  // of the in-order sums and spills them (27 instructions a point more).
-#pragma GCC unroll 1
+  // One row of the stencil an iteration: unrolled in full, the compiler computes all nine
+  // nodes' products ahead of the in-order sums and spills them (27 instructions a point
+  // more); one node an iteration costs the loop's count and compare nine times.
+#pragma GCC unroll 3
     for (int a = 0; a < kGridStencilNodes; ++a) {
       const Real* values = &values_i(s.node[a], 0);
       const Lanes N = broadcast(s.N[a]), dx = broadcast(s.dx[a]), dy = broadcast(s.dy[a]);
