@@ -56,7 +56,7 @@ struct GridStencil {
   /// 0-2 (lane 3 the first y value, overwritten by the next row or left in the padding) times
   /// the row's y function, three vector products a row where the compiler's own vectorising of
   /// the 27 scalar products costs more in shuffles than the products.
-  KOKKOS_INLINE_FUNCTION GridStencil(const TensorShape& t, int row) {
+  KOKKOS_FORCEINLINE_FUNCTION GridStencil(const TensorShape& t, int row) {
     static_assert(sizeof(t.value[0]) == kGridStencil * sizeof(Real) && kGridStencil + 1 == kLanes,
                   "a row of x values and the first y value are one Lanes");
     static_assert(sizeof(t.line[0]) == kGridStencil * sizeof(int), "rows of lines as values");
