@@ -126,7 +126,7 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
   const Real weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42
   // liquid (4.41, 4.43, 4.45, 4.46): zero factors for a dry point
   Real m_intrinsic = 0, drag = 0, pressure_volume = 0, weight_liquid = 0, liquid_volume = 0;
-  Real vl[kDim] = {0, 0}, cl[kAffineComponents] = {0, 0, 0, 0};
+  Real vl[kDim] = {0, 0};
   if (wet) {
     const Real rho = v.density_liquid_p(p);
     m_intrinsic = rho * volume;
@@ -138,17 +138,21 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
     vl[0] = v.velocity_liquid_p(p, 0);
     vl[1] = v.velocity_liquid_p(p, 1);
   }
-  Real cs[kAffineComponents] = {0, 0, 0, 0};
+  // APIC: C_S and C_L (C_00, C_01, C_10, C_11 each, a dry point's C_L zero) turned into
+  // C_d0 and C_d1 of each velocity by two shuffles of the rows (the compiler had moved the
+  // eight components through the stack)
+  static_assert(kAffineComponents == kLanes, "a point's C_p is one Lanes (LayoutRight row)");
+  Lanes affine_x = {}, affine_y = {};
   if constexpr (kAffine) {
-    loadComponents(v.affine_solid_p, p, cs);
-    if (wet) loadComponents(v.affine_liquid_p, p, cl);
+    const Lanes solid = loadBlock(&v.affine_solid_p(p, 0));
+    const Lanes liquid = wet ? loadBlock(&v.affine_liquid_p(p, 0)) : Lanes{};
+    affine_x = __builtin_shufflevector(solid, liquid, 0, 2, 4, 6);
+    affine_y = __builtin_shufflevector(solid, liquid, 1, 3, 5, 7);
   }
   // per block: its slots as factors of N, dN/dx and dN/dy
   const Lanes masses = lanesOf(m_solid, m_liquid, m_intrinsic, drag);
   const Lanes momentum_mass = lanesOf(m_solid, m_solid, m_intrinsic, m_intrinsic);
   const Lanes velocity = lanesOf(v.velocity_solid_p(p, 0), v.velocity_solid_p(p, 1), vl[0], vl[1]);
-  const Lanes affine_x = lanesOf(cs[0], cs[2], cl[0], cl[2]);  // C_d0 of each velocity
-  const Lanes affine_y = lanesOf(cs[1], cs[3], cl[1], cl[3]);  // C_d1
   // block 2: -(s dN)_d V for the mixture, dN/dx p_L V for the liquid, N V and N W
   const Lanes force_x = lanesOf(0, sxx, sxy, pressure_volume);
   const Lanes force_y = lanesOf(0, sxy, syy, 0);
