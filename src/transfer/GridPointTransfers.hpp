@@ -120,9 +120,11 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
   const Real m_solid = v.mass_solid_p(p);
   const Real m_liquid = wet ? v.mass_liquid_p(p) : 0;
   const Real bishop = wet ? v.saturation_p(p) * v.pressure_p(p) : 0;  // chi = S_L (4.5)
-  Real stress[kStressComponents];
-  loadComponents(v.stress_p, p, stress);
-  const Real sxx = stress[XX] - bishop, syy = stress[YY] - bishop, sxy = stress[XY];
+  // the stress row (XX, YY, ZZ, XY) less chi p_L on the diagonal, one load and one
+  // subtraction (XY - +0 is XY to the bit): (sxx, syy, -, sxy)
+  static_assert(XX == 0 && YY == 1 && XY == 3 && kStressComponents == kLanes,
+                "a point's stress is one Lanes (LayoutRight row)");
+  const Lanes stress = loadBlock(&v.stress_p(p, 0)) - lanesOf(bishop, bishop, 0, 0);
   const Real weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42
   // liquid (4.41, 4.43, 4.45, 4.46): zero factors for a dry point
   Real m_intrinsic = 0, drag = 0, pressure_volume = 0, weight_liquid = 0, liquid_volume = 0;
@@ -154,8 +156,9 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
   const Lanes momentum_mass = lanesOf(m_solid, m_solid, m_intrinsic, m_intrinsic);
   const Lanes velocity = lanesOf(v.velocity_solid_p(p, 0), v.velocity_solid_p(p, 1), vl[0], vl[1]);
   // block 2: -(s dN)_d V for the mixture, dN/dx p_L V for the liquid, N V and N W
-  const Lanes force_x = lanesOf(0, sxx, sxy, pressure_volume);
-  const Lanes force_y = lanesOf(0, sxy, syy, 0);
+  const Lanes liquid_force = lanesOf(0, pressure_volume, 0, 0);
+  const Lanes force_x = __builtin_shufflevector(stress, liquid_force, 4, 0, 3, 5);  // 0 sxx sxy pV
+  const Lanes force_y = __builtin_shufflevector(stress, liquid_force, 4, 3, 1, 6);  // 0 sxy syy 0
   const Lanes force_scale = lanesOf(0, -volume, -volume, 1);
   const Lanes force_n = lanesOf(liquid_volume, 0, weight_mixture, 0);
   // block 3: dN/dy p_L V + N W_L

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <vector>
 
 #include "argine/mesh/GridShapes.hpp"
 
@@ -56,6 +58,40 @@ TEST(GridShapes, GimpHandValues) {
   gimp(1 - l + 1e-12, l, b, sb);
   EXPECT_NEAR(a, b, 1e-11);
   EXPECT_NEAR(sa, sb, 1e-10);
+}
+
+/// The same bits (sign of zero included).
+bool sameBits(Real a, Real b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(GridShapes, LaneFunctionsGiveTheScalarFunctionsBits) {
+  // gimpLanes / quadraticBSplineLanes (selects, the stencil's path) against gimp /
+  // quadraticBSpline (branches) at random distances and on every piece's ends, +-0 included.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(-2.0, 2.0);
+  for (const Real l : {0.5, 0.25, 0.125, 0.1}) {
+    std::vector<Real> r = {0.0, -0.0, l, -l, 1 - l, l - 1, 1 + l, -1 - l, 0.5, -0.5, 1.5, -1.5};
+    for (const Real x : std::vector<Real>(r)) {
+      r.push_back(std::nextafter(x, 3.0));
+      r.push_back(std::nextafter(x, -3.0));
+    }
+    for (int trial = 0; trial < 4000; ++trial) r.push_back(u(rng));
+    for (std::size_t i = 0; i < r.size(); i += kLanes) {
+      Lanes distances;
+      for (int k = 0; k < kLanes; ++k) distances[k] = r[(i + k) % r.size()];
+      Lanes gv, gs, bv, bs;
+      gimpLanes(distances, l, gv, gs);
+      quadraticBSplineLanes(distances, bv, bs);
+      for (int k = 0; k < kLanes; ++k) {
+        Real value, slope;
+        gimp(distances[k], l, value, slope);
+        EXPECT_TRUE(sameBits(gv[k], value) && sameBits(gs[k], slope)) << distances[k] << " " << l;
+        quadraticBSpline(distances[k], value, slope);
+        EXPECT_TRUE(sameBits(bv[k], value) && sameBits(bs[k], slope)) << distances[k];
+      }
+    }
+  }
 }
 
 /// Sums of a 1D stencil: sum N, sum N x_k, sum dN/dx, sum dN/dx x_k (x_k = k h).
