@@ -1,7 +1,6 @@
 #include "argine/physics/PointBorneLoads.hpp"
 
 #include <Kokkos_ScatterView.hpp>
-#include <string>
 #include <vector>
 
 #include "argine/parallel/NodalExchange.hpp"
@@ -93,11 +92,10 @@ void PointBorneLoadFields::allocate(int num_nodes) {
 
 void PointBorneLoadFields::compensateSums(bool on) {
   compensated_ = on;
-  const int nodes = on ? static_cast<int>(spread_i.extent(0)) : 0;
-  for (int k = 0; k < kLowParts; ++k)
-    if (static_cast<int>(spread_lo[k].extent(0)) != nodes)
-      spread_lo[k] = Kokkos::View<Real**, MemSpace>("point_borne_spread_lo" + std::to_string(k),
-                                                    nodes, 2 * kDim);
+  if (!on)
+    spread_lo = {};
+  else if (spread_lo[0].extent(0) != spread_i.extent(0))
+    spread_lo = allocateLowParts(spread_i);
 }
 
 void PointBorneLoadFields::zero(const ActiveNodes& active) {
