@@ -286,6 +286,16 @@ ListSchema materialKeys() {
                                "liquid mass balance: complete (Eq. 4.12) or simplified (Eq. 4.14)")
                    .when("Phase Model", kWetPhases)
                    .byDefault(std::string("complete")));
+  material.add(
+      KeySpec::choice("Tension Cracks", deckWords(kTensionCracksWords),
+                      "what fills the opening of a point at the tension cut-off that held suction "
+                      "at the start of the step: pore space: the point's own pores, on the "
+                      "retention curve (the thesis; the suction it makes draws water into the "
+                      "crack); air-filled: a crack open to the surface, kept out of the pores as "
+                      "for a dry point, and the point drains into it above p_L = 0 while it is "
+                      "open (doc/theory.md, 'Air-filled tension cracks')")
+          .when("Phase Model", {"unsaturated"})
+          .byDefault(std::string("pore space")));
   material.add(KeySpec::sublist("Solid", solidKeys(), "solid skeleton").require());
   material.add(KeySpec::sublist("Liquid", liquidKeys(), "pore liquid (defaults: water at 20 C)")
                    .when("Phase Model", kWetPhases));

@@ -425,8 +425,10 @@ MaterialSpec parseMaterial(const DeckSection& material) {
     spec.liquid = parseLiquid(material.section("Liquid"));
     spec.conductivity = parseConductivity(material.section("Conductivity"), spec.liquid);
   }
-  if (spec.phase == PhaseModel::Unsaturated)
+  if (spec.phase == PhaseModel::Unsaturated) {
     spec.retention = parseRetention(material.section("Retention"));
+    spec.tension_cracks = deckValue(kTensionCracksWords, material.word("Tension Cracks"));
+  }
   spec.initial = parseInitialState(material.section("Initial State"), wet);
   spec.locking = parseLockingMitigation(material.section("Locking Mitigation"));
   return spec;

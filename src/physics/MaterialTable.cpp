@@ -16,6 +16,7 @@ MaterialTable::MaterialTable(const std::vector<MaterialSpec>& materials) {
     PointMaterial material;
     material.phase = spec.phase;
     material.mass_balance = spec.mass_balance;
+    material.tension_cracks = spec.tension_cracks;
     material.solid_density = spec.solid_density;
     material.solid = spec.solid;
     material.solid_constants = solidConstants(spec.solid);

@@ -363,6 +363,24 @@ TEST(DeckReader, ReadMeshSpecNeedsOnlyTheMeshSection) {
                    "y must exceed that of Lower Left (m) (0), got -1");
 }
 
+TEST(DeckReader, TensionCracksOfAnUnsaturatedMaterial) {
+  // The pore-space model (the thesis) by default; air-filled by the key; the key belongs to
+  // unsaturated materials only.
+  const Deck plain = parseText(kCompleteDeck);
+  EXPECT_EQ(plain.materials[0].tension_cracks, TensionCracks::PoreSpace);
+  EXPECT_EQ(plain.materials[0].tension_cracks, MaterialSpec{}.tension_cracks);
+  const std::string unsaturated = "      Phase Model: unsaturated\n";
+  const Deck air = parseText(
+      replaced(kCompleteDeck, unsaturated, unsaturated + "      Tension Cracks: air-filled\n"));
+  EXPECT_EQ(air.materials[0].tension_cracks, TensionCracks::AirFilled);
+  expectDeckError(
+      replaced(kCompleteDeck, unsaturated, unsaturated + "      Tension Cracks: water\n"),
+      "Materials/embankment/Tension Cracks", "pore space");
+  expectDeckError(replaced(kCompleteDeck, "      Points Per Element: 1\n",
+                           "      Points Per Element: 1\n      Tension Cracks: air-filled\n"),
+                  "Materials/foundation/Tension Cracks", "Phase Model is unsaturated");
+}
+
 TEST(DeckReader, PolygonRegionsAreChecked) {
   const std::string rectangle =
       "Generate: {Type: rectangle, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right "

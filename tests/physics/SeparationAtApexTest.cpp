@@ -96,16 +96,86 @@ TEST(SeparationAtApex, APointCrackingAtTheTensionCutOffKeepsTheVolumeItsStressFo
   EXPECT_LT(p.volume(0), 1e-4 * (1 + 2e-3));
 }
 
-TEST(SeparationAtApex, AnUnsaturatedCrackAtTheCutOffStaysAirFilledPoreSpace) {
-  // The cut-off case of APointCrackingAtTheTensionCutOff... on an unsaturated point: the
-  // crack is air-filled pore space of the point (keepsOpeningOut): the kinematic volume.
-  MaterialSpec material = sand(PhaseModel::Unsaturated);
+/// The sand with c = 2 kPa and the cut-off at 0 (APointCrackingAtTheTensionCutOff...), its
+/// cracks filled as `cracks` says.
+MaterialSpec crackingSand(PhaseModel phase, TensionCracks cracks = TensionCracks::PoreSpace) {
+  MaterialSpec material = sand(phase);
   material.solid.cohesion = 2e3;
   material.solid.tensile_strength = 0;
-  const MaterialPoints p = updateOnePoint(material, 1e-2, 0, -5e3);
+  material.tension_cracks = cracks;
+  return material;
+}
+
+TEST(SeparationAtApex, AnUnsaturatedCrackAtTheCutOffStaysPoreSpaceByDefault) {
+  // The cut-off case of APointCrackingAtTheTensionCutOff... on an unsaturated point with
+  // `Tension Cracks: pore space` (the thesis): the crack is pore space of the point
+  // (keepsOpeningOut): the kinematic volume.
+  const MaterialPoints p = updateOnePoint(crackingSand(PhaseModel::Unsaturated), 1e-2, 0, -5e3);
   EXPECT_EQ(p.plastic_state(0), kPlasticStateTension);
   EXPECT_NEAR(p.volume(0), 1e-4 * (1 + 1e-2), 1e-15);
   EXPECT_EQ(p.separation(0), 0.0);
+}
+
+TEST(SeparationAtApex, AnAirFilledCrackIsKeptOutOfThePoresAndDrawsNoWater) {
+  // The same with `Tension Cracks: air-filled`: the point kept its suction, so the crack is
+  // open to the air: the point keeps the volume its stress followed, as a dry point, the
+  // opening is its separation, and its pores hold the liquid they held: S_L = 0.8 n0 V0 /
+  // (n V) with n V = V - 0.6 V0 (rho_L changes by ~p / K_L, 1e-8 here).
+  const MaterialPoints p = updateOnePoint(
+      crackingSand(PhaseModel::Unsaturated, TensionCracks::AirFilled), 1e-2, 0, -5e3);
+  EXPECT_EQ(p.plastic_state(0), kPlasticStateTension);
+  const Real bulk = 1e6 / 1.5;
+  const Real mean =
+      (p.stress_effective(0, XX) + p.stress_effective(0, YY) + p.stress_effective(0, ZZ)) / 3;
+  const Real kept = (mean + 1e3) / bulk;  // the elastic part of d eps_vol
+  EXPECT_NEAR(p.volume(0), 1e-4 * (1 + kept), 1e-15);
+  EXPECT_NEAR(p.separation(0), 1e-2 - kept, 1e-15);
+  const Real saturation = 0.8 * 0.4 / (0.4 + kept);
+  EXPECT_NEAR(p.saturation(0), saturation, 1e-6);
+  EXPECT_NEAR(p.pressure_liquid(0), -(1 - saturation) / 4e-5, 0.05);
+  // the pore-space crack takes the whole 1e-2 into the pores: S_L = 0.8 x 0.4 / 0.41
+  const MaterialPoints pores = updateOnePoint(crackingSand(PhaseModel::Unsaturated), 1e-2, 0, -5e3);
+  EXPECT_NEAR(pores.saturation(0), 0.8 * 0.4 / 0.41, 1e-6);
+  EXPECT_GT(p.saturation(0), pores.saturation(0) + 0.01);
+}
+
+TEST(SeparationAtApex, LiquidSqueezedFromACrackedPointFillsItsCrackAtZeroPressure) {
+  // Nearly saturated (p_L = -50 Pa, S_L = 0.998), pulled in x (1e-2) and squeezed in y
+  // (-3e-3). Hand-computed: lambda = G = 4e5 Pa; the trial sigma_xx = -1e3 + 1.2e6 x 1e-2 +
+  // 4e5 x (-3e-3) = 9,800 Pa returns to the cut-off alone (sigma_yy -3,867, sigma_zz -1,467
+  // Pa: inside the Mohr-Coulomb planes) with d lambda = 9,800 / 1.2e6 = 8.1667e-3, the
+  // opening; the pores keep d eps_vol - opening = 7e-3 - 8.1667e-3 = -1.1667e-3, a squeeze
+  // of n V from 0.4 to 0.39883 V0 that the liquid (0.3992 rho_L0 V0) no longer fits at
+  // p_L <= 0: the rest stands in the crack (8.17e-7 m^3 of room), p_L = 0, M_L kept.
+  // The pore-space model takes the opening into the pores instead: suction, s = 480 Pa.
+  const MaterialSpec material = crackingSand(PhaseModel::Unsaturated, TensionCracks::AirFilled);
+  const Real mass0 = 0.4 * 0.998 * liquidDensity(material.liquid, -50) * 1e-4;
+  const MaterialPoints air = updateOnePoint(material, 1e-2, -3e-3, -50);
+  EXPECT_EQ(air.plastic_state(0), kPlasticStateTension);
+  EXPECT_NEAR(air.separation(0), 9800 / 1.2e6, 1e-12);
+  EXPECT_NEAR(air.volume(0), 1e-4 * (1 + 7e-3 - 9800 / 1.2e6), 1e-15);
+  EXPECT_EQ(air.pressure_liquid(0), 0.0);
+  EXPECT_NEAR(air.mass_liquid(0), mass0, 1e-12 * mass0);
+  EXPECT_EQ(air.saturation(0), 1.0);
+  const MaterialPoints pores =
+      updateOnePoint(crackingSand(PhaseModel::Unsaturated), 1e-2, -3e-3, -50);
+  EXPECT_NEAR(pores.pressure_liquid(0), -(1 - 0.998 * 0.4 / 0.407) / 4e-5, 5.0);
+
+  // Closing the crack (2 x -5e-3: 8.1667e-3 of gap, then 1.8333e-3 of the pores) puts the
+  // crack's water back into the smaller pores: the crack is gone and p_L > 0, M_L kept.
+  MaterialPoints points = air;
+  const MaterialTable table({material});
+  PointRates rates;
+  rates.allocate(1);
+  rates.strain_increment_p(0, XX) = -5e-3;
+  rates.strain_increment_p(0, YY) = -5e-3;
+  const PointUpdateViews v{table.materials(), points, rates, false};
+  closeSeparation(v, 0);
+  updatePorosityAndVolume(v, 0);
+  updateLiquidPressure(v, 0);
+  EXPECT_EQ(points.separation(0), 0.0);
+  EXPECT_GT(points.pressure_liquid(0), 0.0);
+  EXPECT_NEAR(points.mass_liquid(0), mass0, 1e-12 * mass0);
 }
 
 TEST(SeparationAtApex, APointThatOpenedClosesItsGapBeforeItCompresses) {

@@ -69,6 +69,7 @@ struct MaterialSpec {
   Real porosity = 0.4;        ///< n0 (-)
   Real solid_density = 2650;  ///< rho_S (kg/m^3)
   MassBalanceForm mass_balance = MassBalanceForm::Complete;
+  TensionCracks tension_cracks = TensionCracks::PoreSpace;  ///< unsaturated only
   SolidSpec solid;
   LiquidSpec liquid;
   RetentionSpec retention;

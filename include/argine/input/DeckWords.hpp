@@ -32,6 +32,11 @@ inline constexpr DeckWord<MassBalanceForm> kMassBalanceWords[] = {
     {"simplified", MassBalanceForm::Simplified},
 };
 
+inline constexpr DeckWord<TensionCracks> kTensionCracksWords[] = {
+    {"pore space", TensionCracks::PoreSpace},
+    {"air-filled", TensionCracks::AirFilled},
+};
+
 inline constexpr DeckWord<SolidModel> kSolidModelWords[] = {
     {"linear elastic", SolidModel::LinearElastic},
     {"Mohr-Coulomb", SolidModel::MohrCoulomb},

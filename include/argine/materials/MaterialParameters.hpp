@@ -12,6 +12,12 @@ enum class SolidModel { LinearElastic, MohrCoulomb, SuctionMohrCoulomb };
 enum class RetentionModel { Linear, VanGenuchten, Gardner };
 enum class ConductivityModel { Constant, Hillel, Mualem, Gardner };
 enum class MassBalanceForm { Complete, Simplified };  ///< Eq. 4.12 or Eq. 4.14
+/// What fills the opening of an unsaturated point at the tension cut-off
+/// (physics/PointUpdates.hpp, keepsOpeningOut): its own pore space, on the soil's retention
+/// curve (the thesis), or air, a crack open to the surface (with suction at the start of the
+/// step; the opening is then kept out of the pores, as for a dry point, and the point drains
+/// into the crack above p_L = 0 while it is open).
+enum class TensionCracks { PoreSpace, AirFilled };
 /// Anti-locking averaging of a point quantity's increment (physics/VolumetricAveraging.hpp):
 /// none, over the points of the element (MPM-MIXED style), or through the nodes (nodal mixed
 /// discretisation).

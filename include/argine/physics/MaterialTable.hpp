@@ -17,6 +17,7 @@ struct MaterialSpec;
 struct PointMaterial {
   PhaseModel phase = PhaseModel::Saturated;                  ///< dry, saturated or unsaturated
   MassBalanceForm mass_balance = MassBalanceForm::Complete;  ///< Eq. 4.12 or 4.14
+  TensionCracks tension_cracks = TensionCracks::PoreSpace;   ///< unsaturated: keepsOpeningOut
   Real solid_density = 2650;                                 ///< rho_S (kg/m^3)
   SolidSpec solid;                                           ///< skeleton model
   SolidConstants solid_constants;  ///< solidConstants(solid), once per material

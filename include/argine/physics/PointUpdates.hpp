@@ -45,6 +45,38 @@ KOKKOS_INLINE_FUNCTION void closeSeparation(const PointUpdateViews& v, int p) {
   v.points.separation(p) = gap - closure;
 }
 
+/// The volume of a point's open air-filled crack (m^3): separation V for a material with
+/// `Tension Cracks: air-filled` (keepsOpeningOut), 0 otherwise (the opening of the pore-space
+/// model, and a dry point's, holds no liquid).
+KOKKOS_INLINE_FUNCTION Real airFilledCrackVolume(const PointUpdateViews& v, int p,
+                                                 const PointMaterial& material) {
+  if (material.tension_cracks != TensionCracks::AirFilled) return 0;
+  const Real gap = v.points.separation(p);
+  return gap > 0 ? gap * v.points.volume(p) : Real(0);
+}
+
+/// p_L of a point holding the liquid mass `mass` in its pores (pore_volume = n V) and, with
+/// an open air-filled crack (crack_volume > 0, airFilledCrackVolume), in the crack too. The
+/// crack is open to the air: it takes no water while the pores hold suction (a crack mm wide
+/// holds none against it) and holds water only at p_L = 0 (its own head over a point's size
+/// neglected):
+///  - M_L <= S_L(0) rho_L(0) n V: the pores alone, p_L <= 0 from their content (4.12);
+///  - up to rho_L(0) crack_volume more: p_L = 0, the rest stands in the crack;
+///  - beyond: the crack is full and the pores hold the rest at p_L > 0.
+/// So liquid squeezed out of the pores of a cracked point fills its crack instead of raising
+/// p_L, and comes back when the crack closes; M_L is kept. Without a crack: the pores alone.
+KOKKOS_INLINE_FUNCTION Real pressureOfPointLiquid(const PointMaterial& material, Real mass,
+                                                  Real pore_volume, Real crack_volume, Real guess) {
+  if (crack_volume > 0) {
+    const Real full_pores =
+        saturationOfPressure(material, 0) * material.liquid.density * pore_volume;
+    const Real crack_capacity = material.liquid.density * crack_volume;
+    if (mass > full_pores && mass <= full_pores + crack_capacity) return 0;
+    if (mass > full_pores) mass -= crack_capacity;
+  }
+  return pressureOfLiquidContent(material, mass / pore_volume, guess);
+}
+
 /// Step 6 (done first, the mass balance needs the new pore volume), solid mass balance
 /// (4.9): V <- V (1 + d eps_vol), and n from (1 - n) V = const, so the solid mass
 /// (1 - n) rho_S V is kept exactly. T = Real: point p; Lanes: points p .. p + kLanes - 1.
@@ -91,7 +123,8 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int 
     const Real ds_ds = saturationSuctionDerivative(material.retention, suctionOfPressure(pressure));
     guess += (content - s * rho) / liquidContentSlope(rho, s, ds_ds, material.liquid.bulk_modulus);
   }
-  const Real next = pressureOfLiquidContent(material, content, guess);
+  const Real next = pressureOfPointLiquid(material, mass, v.points.porosity(p) * volume,
+                                          airFilledCrackVolume(v, p, material), guess);
   v.points.pressure_liquid(p) = next;
   // 4.13; saturated, S_L = 1 and the content is the density itself.
   v.points.density_liquid(p) =
@@ -140,18 +173,28 @@ KOKKOS_INLINE_FUNCTION Real separationOpening(const SolidConstants& constants,
   return volumetric - (mean_after - mean_before) / bulk;
 }
 
-/// Whether a point of this phase model and plastic state keeps its opening out of its volume
+/// Whether a point of this material and plastic state keeps its opening out of its pores
 /// (separateFromNeighbours):
 ///  - dry: at the apex and at the tension cut-off (grains part, a crack opens);
-///  - unsaturated: at the apex only, a point pulled apart all round (air fills the opening).
-///    A crack at the cut-off stays air-filled pore space of the point: excluded, the lateral
-///    squeeze that usually comes with it compressed the nearly saturated pores of the levee
-///    crest to p_L = +75 kPa within 0.2 s of the settle stage and the point flew off at 4.5 m/s
-///    (the opening's volume keeps S_L down there);
+///  - unsaturated: at the apex, a point pulled apart all round (air fills the opening); at
+///    the cut-off only with `Tension Cracks: air-filled` and a point that held suction at the
+///    start of the step (`saturation_before` < S_max: the stored S_L, which updateLiquidState
+///    renews after the stress): the crack is then open to the air, and the point's liquid
+///    sees it through pressureOfPointLiquid. With `pore space` (the thesis) the crack stays
+///    pore space of the point on its retention curve: the suction the opening makes draws
+///    water into it (a scarp's cracks drew 0.013 m^3/m into the 0.05 m grid levee, doc/
+///    verification.md). Keeping it out without the crack's own storage broke that run: the
+///    lateral squeeze that comes with a crack compressed the nearly saturated pores (p_L up to
+///    +75 kPa at the crest in the settle stage, a point at -892 kPa, a non-finite stop);
 ///  - saturated: never; water fills the opening, its dilation is the liquid's business (4.12).
-KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(PhaseModel phase, int plastic_state) {
-  if (phase == PhaseModel::Dry) return isSeparating(plastic_state);
-  return phase == PhaseModel::Unsaturated && plastic_state == kPlasticStateApex;
+KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(const PointMaterial& material, int plastic_state,
+                                            Real saturation_before) {
+  if (material.phase == PhaseModel::Dry) return isSeparating(plastic_state);
+  if (material.phase != PhaseModel::Unsaturated) return false;
+  if (plastic_state == kPlasticStateApex) return true;
+  return plastic_state == kPlasticStateTension &&
+         material.tension_cracks == TensionCracks::AirFilled &&
+         saturation_before < material.retention.saturation_max;
 }
 
 /// Step 6 corrected at a separating return (keepsOpeningOut): the opening (separationOpening)
@@ -166,7 +209,7 @@ KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(PhaseModel phase, int plastic_state)
 KOKKOS_INLINE_FUNCTION void separateFromNeighbours(const PointUpdateViews& v, int p,
                                                    const PointMaterial& material, int plastic_state,
                                                    Real opening) {
-  if (!(opening > 0) || !keepsOpeningOut(material.phase, plastic_state)) return;
+  if (!(opening > 0) || !keepsOpeningOut(material, plastic_state, v.points.saturation(p))) return;
   const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
                           v.rates.strain_increment_p(p, ZZ);
   const Real ratio = (1 + volumetric - opening) / (1 + volumetric);  // kept / kinematic
@@ -179,9 +222,10 @@ KOKKOS_INLINE_FUNCTION void separateFromNeighbours(const PointUpdateViews& v, in
                               v.points.density_liquid(p) * v.points.volume(p);
     return;
   }
-  // the same liquid mass in the smaller pore volume: p_L from the content again (4.12)
-  const Real content = v.points.mass_liquid(p) / (v.points.porosity(p) * v.points.volume(p));
-  const Real next = pressureOfLiquidContent(material, content, v.points.pressure_liquid(p));
+  // the same liquid mass in the smaller pore volume (and an air-filled crack): p_L again (4.12)
+  const Real next = pressureOfPointLiquid(
+      material, v.points.mass_liquid(p), v.points.porosity(p) * v.points.volume(p),
+      airFilledCrackVolume(v, p, material), v.points.pressure_liquid(p));
   v.points.pressure_liquid(p) = next;
   v.points.density_liquid(p) = liquidDensity(material.liquid, next);
 }
