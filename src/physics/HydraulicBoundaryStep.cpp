@@ -61,24 +61,22 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
           addToNode<kCompensated>(wet_i, hi.wet_volume_i, lo_wet, shape.node[a],
                                   shape.value[a] * wet_volume);
         if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
-          // the same centre value and point gradient of c as interpolateVelocityGradients
-          // (the grid families: the point's N, Family::kElementCentre)
-          constexpr Real centre = Real(1) / kNodes;
-          const auto weight = [&](int a) {
-            return Family::kElementCentre ? centre : shape.value[a];
-          };
+          // the weights with which the strain kernel's advective flux reads the nodes
+          // (Family::fluxCentre: the element centre, or the centre of the point's grid cell)
+          Real centre[kNodes], centre_gradient[kNodes][kDim];
+          Family::fluxCentre(shapes, p, shape, centre, centre_gradient);
           Real c_centre = 0, grad_c[kDim] = {0, 0};
           for (int a = 0; a < kNodes; ++a) {
             const Real c = content_i(shape.node[a]);
-            c_centre += weight(a) * c;
-            grad_c[0] += c * shape.gradient[a][0];
-            grad_c[1] += c * shape.gradient[a][1];
+            c_centre += centre[a] * c;
+            grad_c[0] += c * centre_gradient[a][0];
+            grad_c[1] += c * centre_gradient[a][1];
           }
           for (int a = 0; a < kNodes; ++a)
             for (int d = 0; d < kDim; ++d)
               addToNode<kCompensated>(
                   weight_i, hi.flux_weight_i, lo_weight, shape.node[a], d,
-                  volume * (c_centre * shape.gradient[a][d] + weight(a) * grad_c[d]));
+                  volume * (c_centre * centre_gradient[a][d] + centre[a] * grad_c[d]));
         } else {
           const Real m_liquid = mass_liquid_p(p);
           for (int a = 0; a < kNodes; ++a)

@@ -17,7 +17,9 @@
 /// advective term at the element centre) or -dt M_L,p div w (simplified), with w_i = v_L - v_S
 /// at the nodes. Both are linear in the nodal w_i, so the total change is exactly
 /// -dt sum_i w_i . G_i with
-///   complete:    G_i = sum_p V_p (c_centre grad N_i(x_p) + N_i(centre) grad c(x_p))
+///   complete:    G_i = sum_p V_p (c_centre grad N_i(x_p) + N_i(centre) grad c(x_p)) on
+///                the element families; on the grid families every N and grad N is that of
+///                the bilinear shapes of the point's cell at its centre (fluxCentre)
 ///   simplified:  G_i = sum_p M_L,p grad N_i(x_p)
 /// (the content-weighted form of the unnormalised 4.51 vector). G_i vanishes at nodes whose
 /// support is filled with soil (exactly for Tri3 with full elements), so the sum is the flux

@@ -203,8 +203,12 @@ KOKKOS_INLINE_FUNCTION void setLostTensorShape(TensorShape& t) {
 
 /// The shape-function families as policies a kernel is written against once and
 /// instantiated for each (withShapeFamily): kNodes nodes a point, Record the type of()
-/// fills, kElementCentre whether a value "at the element centre" (the advective flux, 4.16)
-/// is the mean of the element's nodes (linear) or the point's own interpolation (grid).
+/// fills, kElementCentre whether the advective flux div(c w) (4.12, 4.16) is taken at the
+/// element centre by the element families' strain kernel (linear: true) or at the centre of
+/// the point's cell by the grid families' own kernel (GridPointTransfers.hpp), and
+/// fluxCentre: the weights N_a and gradients dN_a/dx with which that flux reads node a's
+/// c_a and w_a, c = sum N_a c_a, grad c = sum dN_a/dx c_a (the point's liquid mass changes by
+/// -dt V (c sum dN_a/dx . w_a + grad c . sum N_a w_a)).
 template <int Nodes>
 struct ElementShapeFamily {
   static constexpr int kNodes = Nodes;
@@ -216,6 +220,14 @@ struct ElementShapeFamily {
                                                           const LocalView& local_p,
                                                           PointShape& scratch) {
     return shapes.of(p, element_p, local_p, scratch);
+  }
+  /// The element centre's N = 1 / kNodes, the point's own gradients.
+  KOKKOS_INLINE_FUNCTION static void fluxCentre(const PointShapes&, int, const PointShape& shape,
+                                                Real value[kNodes], Real gradient[kNodes][kDim]) {
+    for (int a = 0; a < kNodes; ++a) {
+      value[a] = Real(1) / kNodes;
+      for (int d = 0; d < kDim; ++d) gradient[a][d] = shape.gradient[a][d];
+    }
   }
 };
 
@@ -229,6 +241,22 @@ struct GridShapeFamily {
                                                           GridShapeRecord& scratch) {
     expandGridShape(shapes.grid_p(p), shapes.grid_row, scratch);
     return scratch;
+  }
+  /// The bilinear shapes of the point's cell at its centre (cellCentreWeights1D): N = 1/4
+  /// and dN/dx = (-+1/h) 1/2 at the cell's four corners, 0 at the stencil's other nodes;
+  /// gridStrainIncrements' cellCentreAdvectiveFlux reads the nodes with these.
+  KOKKOS_INLINE_FUNCTION static void fluxCentre(const PointShapes& shapes, int p,
+                                                const GridShapeRecord&, Real value[kNodes],
+                                                Real gradient[kNodes][kDim]) {
+    const TensorShape& t = shapes.grid_p(p);
+    Real weight[kDim][kGridStencil], slope[kDim][kGridStencil];
+    for (int d = 0; d < kDim; ++d) cellCentreWeights1D(t, d, weight[d], slope[d]);
+    for (int a = 0; a < kNodes; ++a) {
+      const int ax = a % kGridStencil, ay = a / kGridStencil;
+      value[a] = weight[0][ax] * weight[1][ay];
+      gradient[a][0] = slope[0][ax] * weight[1][ay];
+      gradient[a][1] = weight[0][ax] * slope[1][ay];
+    }
   }
 };
 
