@@ -293,7 +293,9 @@ ListSchema materialKeys() {
                       "retention curve (the thesis; the suction it makes draws water into the "
                       "crack); air-filled: a crack open to the surface, kept out of the pores as "
                       "for a dry point, and the point drains into it above p_L = 0 while it is "
-                      "open (doc/theory.md, 'Air-filled tension cracks')")
+                      "open (doc/theory.md, 'Air-filled tension cracks'); known defect: a "
+                      "fixed-skeleton stage on a slid grid body can go unstable with it "
+                      "(doc/verification.md, 'The crack model tested')")
           .when("Phase Model", {"unsaturated"})
           .byDefault(std::string("pore space")));
   material.add(KeySpec::sublist("Solid", solidKeys(), "solid skeleton").require());
