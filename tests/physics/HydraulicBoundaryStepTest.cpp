@@ -174,6 +174,24 @@ Real liquidMass(const MaterialPoints& points) {
   return sum;
 }
 
+/// The rain stage (no gravity) on `column` for `duration` (s): the points' storage change,
+/// the rain through the top and the sum over all nodes (m^3/m).
+struct RainBalance {
+  Real storage, rain, all_nodes;
+};
+RainBalance rainBalance(SiltColumn& column, Real duration) {
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  beginRainStage(solver, 0.0);
+  const Real initial = liquidMass(column.points);
+  RainBalance b{0, 0, 0};
+  test::runUntil(solver, duration, [&] {
+    b.rain += solver.boundaryFluxVolumes()[0];
+    b.all_nodes += solver.boundaryFluxVolumes()[1];
+  });
+  b.storage = (liquidMass(column.points) - initial) / solver.referenceLiquidDensity();
+  return b;
+}
+
 TEST(HydraulicStep, RainIntoADryColumnIsImposedAndAccountedExactly) {
   // Suction 100 kPa (S_L = 0.9), k = 4.905e-4 m/s, rain q = 1e-5 m/s << k on the 0.1 m wide
   // top, no gravity, sealed sides and base. The zero-pressure prediction would suck in far
@@ -182,16 +200,7 @@ TEST(HydraulicStep, RainIntoADryColumnIsImposedAndAccountedExactly) {
   // change of the points' liquid mass (no other node passes liquid in a one-element-wide
   // Tri3 column with sealed sides).
   SiltColumn column(10, 0.1, 1.0, -1e5, 4.905e-4);
-  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
-  beginRainStage(solver, 0.0);
-  const Real rho = solver.referenceLiquidDensity();
-  const Real initial = liquidMass(column.points);
-  Real rain = 0, all_nodes = 0;
-  test::runUntil(solver, 2.0, [&] {
-    rain += solver.boundaryFluxVolumes()[0];
-    all_nodes += solver.boundaryFluxVolumes()[1];
-  });
-  const Real storage = (liquidMass(column.points) - initial) / rho;
+  const auto [storage, rain, all_nodes] = rainBalance(column, 2.0);
   std::printf("[ rain ] storage %.9g, rain %.9g, all nodes %.9g m^3/m (expected 2e-6)\n", storage,
               rain, all_nodes);
   EXPECT_NEAR(all_nodes, storage, 1e-9 * std::fabs(storage));  // the identity
@@ -209,16 +218,7 @@ TEST(HydraulicStep, OnTheGridFamiliesTheFluxWeightsAreThoseOfTheCellCentreFlux) 
   // imposed another flux than the points received.
   for (const ShapeFamily family : {ShapeFamily::Gimp, ShapeFamily::BSpline}) {
     SiltColumn column(10, 0.1, 1.0, -1e5, 4.905e-4, family);
-    ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
-    beginRainStage(solver, 0.0);
-    const Real rho = solver.referenceLiquidDensity();
-    const Real initial = liquidMass(column.points);
-    Real rain = 0, all_nodes = 0;
-    test::runUntil(solver, 0.5, [&] {
-      rain += solver.boundaryFluxVolumes()[0];
-      all_nodes += solver.boundaryFluxVolumes()[1];
-    });
-    const Real storage = (liquidMass(column.points) - initial) / rho;
+    const auto [storage, rain, all_nodes] = rainBalance(column, 0.5);
     const char* name = family == ShapeFamily::Gimp ? "GIMP" : "B-spline";
     std::printf("[ rain, %s ] storage %.9g, rain %.9g, all nodes %.9g m^3/m (q t w = 5e-7)\n", name,
                 storage, rain, all_nodes);
