@@ -15,19 +15,6 @@ using test::hostCopy;
 using test::makeStage;
 using test::runUntil;
 
-/// `mesh` as a structured grid of nx x ny cells over [x0, x0 + w] x [y0, y0 + h] (what
-/// generateRectangle sets), with the transfers on `family`.
-void onGrid(Mesh& mesh, int nx, int ny, Real w, Real h, ShapeFamily family, Real x0 = 0,
-            Real y0 = 0) {
-  mesh.structured.cells[0] = nx;
-  mesh.structured.cells[1] = ny;
-  mesh.structured.origin[0] = x0;
-  mesh.structured.origin[1] = y0;
-  mesh.structured.spacing[0] = w / nx;
-  mesh.structured.spacing[1] = h / ny;
-  mesh.shape_functions = family;
-}
-
 class GridFamilies : public ::testing::TestWithParam<std::tuple<ShapeFamily, TransferScheme>> {};
 
 TEST_P(GridFamilies, DryColumnUnderGravityReachesGeostaticStress) {
@@ -36,8 +23,7 @@ TEST_P(GridFamilies, DryColumnUnderGravityReachesGeostaticStress) {
   // (1 - nu) sigma'_yy, compared at each point's own height.
   const auto [family, scheme] = GetParam();
   const MaterialSpec sand = test::elasticMaterial("sand", PhaseModel::Dry, 1e6, 0.3, 0.4);
-  Mesh mesh = test::rectangleMesh(2, 20, 0.1, 1.0, ElementType::Quad4);
-  onGrid(mesh, 2, 20, 0.1, 1.0, family);
+  Mesh mesh = test::gridMesh(2, 20, 0.1, 1.0, family);
   MaterialPoints points = test::seedUniform(mesh);
   std::vector<MaterialSpec> materials{sand};
   initialisePointState(materials, points);
@@ -73,8 +59,7 @@ TEST_P(GridFamilies, RigidTranslationAcrossCellsKeepsStressesZero) {
   // velocity stays, strains and pressures stay zero (the grid shapes reproduce a uniform
   // velocity exactly, also where the folded edges are not reached).
   const auto [family, scheme] = GetParam();
-  Mesh mesh = test::rectangleMesh(6, 6, 3.0, 3.0, ElementType::Quad4);
-  onGrid(mesh, 6, 6, 3.0, 3.0, family);
+  Mesh mesh = test::gridMesh(6, 6, 3.0, 3.0, family);
   MaterialPoints points = test::seedUniform(mesh, 0, [](int e) {
     const int i = e % 6, j = e / 6;
     return i >= 2 && i < 4 && j >= 2 && j < 4;
@@ -111,8 +96,7 @@ TEST_P(GridFamilies, UndrainedLoadGivesSkemptonPorePressure) {
   const auto [family, scheme] = GetParam();
   MaterialSpec clay =
       test::elasticMaterial("clay", PhaseModel::Saturated, 1e7, 0.0, 0.4, 1e-2, 2e7);
-  Mesh mesh = test::rectangleMesh(1, 5, 0.2, 1.0, ElementType::Quad4);
-  onGrid(mesh, 1, 5, 0.2, 1.0, family);
+  Mesh mesh = test::gridMesh(1, 5, 0.2, 1.0, family);
   MaterialPoints points = test::seedUniform(mesh);
   std::vector<MaterialSpec> materials{clay};
   initialisePointState(materials, points);

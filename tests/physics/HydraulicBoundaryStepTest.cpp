@@ -128,17 +128,9 @@ struct SiltColumn {
     silt.retention.saturation_min = 0;
     silt.initial.liquid_pressure = initial_pressure;
     materials = {silt};
-    if (family == ShapeFamily::Linear) {
-      mesh = test::rectangleMesh(1, ny, width, height, ElementType::Tri3);
-    } else {
-      mesh = test::rectangleMesh(2, ny, width, height, ElementType::Quad4);
-      mesh.structured.cells[0] = 2;
-      mesh.structured.cells[1] = ny;
-      mesh.structured.origin[0] = mesh.structured.origin[1] = 0;
-      mesh.structured.spacing[0] = width / 2;
-      mesh.structured.spacing[1] = height / ny;
-      mesh.shape_functions = family;
-    }
+    mesh = family == ShapeFamily::Linear
+               ? test::rectangleMesh(1, ny, width, height, ElementType::Tri3)
+               : test::gridMesh(2, ny, width, height, family);
     points = test::seedUniform(mesh);
     initialisePointState(materials, points);
   }

@@ -77,6 +77,21 @@ inline Mesh rectangleMesh(int nx, int ny, Real width, Real height, ElementType t
   return mesh;
 }
 
+/// rectangleMesh of quad4 as a structured grid of nx x ny cells (what generateRectangle
+/// sets), with the transfers on the grid family `family` (GIMP, B-spline).
+inline Mesh gridMesh(int nx, int ny, Real width, Real height, ShapeFamily family, Real x0 = 0,
+                     Real y0 = 0) {
+  Mesh mesh = rectangleMesh(nx, ny, width, height, ElementType::Quad4, x0, y0);
+  mesh.structured.cells[0] = nx;
+  mesh.structured.cells[1] = ny;
+  mesh.structured.origin[0] = x0;
+  mesh.structured.origin[1] = y0;
+  mesh.structured.spacing[0] = width / nx;
+  mesh.structured.spacing[1] = height / ny;
+  mesh.shape_functions = family;
+  return mesh;
+}
+
 /// Points at fixed local positions in every element (Quad4: the 2 x 2 points at xi = +-1/2;
 /// Tri3: 3 points at (1/6, 1/6), (2/3, 1/6), (1/6, 2/3)), each with an equal share of the
 /// element area as volume, material `material`, in the elements where `seeded(e)` holds (all
