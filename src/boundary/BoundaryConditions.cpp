@@ -220,6 +220,8 @@ StageBoundaryConditions::StageBoundaryConditions(const Mesh& mesh, const StageSp
       }
       case BoundaryKind::LiquidPressure: {
         const SideSet& set = requireSideSet(mesh, where, spec.side_set);
+        for (const Side& side : boundary_detail::sidesOf(set, host))
+          for (const int node : {side.a, side.b}) pressure_nodes_.push_back(node);
         if (spec.pressure == 0) break;  // drained: the natural condition, no load
         pressures_.emplace_back(spec.name,
                                 integrateSideLoads(set, host, {0.0, 0.0}, spec.pressure));

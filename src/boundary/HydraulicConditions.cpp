@@ -1,8 +1,10 @@
 #include "argine/boundary/HydraulicConditions.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "argine/core/Error.hpp"
 #include "argine/mesh/Mesh.hpp"
@@ -84,6 +86,7 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
     condition.liquid_density = spec.hydraulic.liquid_density;
     conditions_.push_back(std::move(condition));
   }
+  atmosphere_ = stage.atmosphere_on_free_surfaces;
   sides_used_.resize(conditions_.size());
   current_values_.assign(conditions_.size(), 0.0);
   current_end_values_.assign(conditions_.size(), 0.0);
@@ -204,6 +207,36 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     }
   }
 
+  // The atmosphere on the free sides no condition covers: seepage-face nodes where no
+  // condition owns the node (a condition's node keeps its condition's rule).
+  const int atmosphere = static_cast<int>(conditions_.size());
+  std::vector<int> conditioned;
+  for (const auto& [node, entry] : corrections) conditioned.push_back(node);
+  if (atmosphere_) {
+    std::set<std::pair<int, int>> covered;  // (element, local side) of the conditions' sides
+    for (const auto& sides : sides_used_)
+      for (const FreeSide& side : sides) covered.insert({side.element, side.side});
+    auto rule = [&](int node) { return rules_.empty() ? 0u : unsigned{rules_[node]}; };
+    auto ruled = [&](const FreeSide& side) {  // sealed, or its p_L prescribed (setOtherLiquidRules)
+      if ((rule(side.a) & rule(side.b) & kPressurePrescribed) != 0) return true;
+      for (const int node : {side.a, side.b})
+        for (int d = 0; d < kDim; ++d)
+          if (std::fabs(side.normal[d]) > 1e-9 && !(rule(node) & (d == 0 ? kLockedX : kLockedY)))
+            return false;
+      return true;
+    };
+    for (const FreeSide& side : boundary.sides()) {
+      if (covered.count({side.element, side.side}) || ruled(side)) continue;
+      for (const int node : {side.a, side.b}) {
+        if (owner.count(node) || (rule(node) & kPressurePrescribed)) continue;
+        corrections.emplace(node,
+                            Claim{static_cast<int>(FluxCorrection::SeepageFace), 0.0, atmosphere});
+        auto& sum = face[{atmosphere, node}];
+        for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
+      }
+    }
+  }
+
   // loads: liquid and mixture
   std::vector<int> load_node;
   std::vector<std::array<Real, 2 * kDim>> load_force;
@@ -263,6 +296,11 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
       for (int d = 0; d < kDim; ++d) normal(j, d) = c_normal[kDim * j + d];
     Kokkos::deep_copy(corrections_.normal, normal);
   }
+
+  for (const auto& [node, f] : forces) conditioned.push_back(node);
+  std::sort(conditioned.begin(), conditioned.end());
+  conditioned.erase(std::unique(conditioned.begin(), conditioned.end()), conditioned.end());
+  toDevice(conditioned, "conditioned_node", conditioned_nodes_);
 
   std::vector<int> o_node, o_owner;
   for (const auto& [node, c] : owner) {

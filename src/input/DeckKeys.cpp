@@ -747,6 +747,18 @@ ListSchema stageKeys() {
                             "outline)")
                 .byDefault(std::string(kHydraulicLoadsByMesh))
                 .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
+  stage.add(KeySpec::choice("Surfaces Without Condition", Words{"atmosphere", "open"},
+                            "the liquid's rule on free sides that no hydraulic condition covers "
+                            "(a crest, the faces of a crack or of the slid mass): atmosphere: "
+                            "the rule of a seepage face, which drains where p_L >= 0 and lets "
+                            "no liquid in at suction, since the air holds no water to give; "
+                            "open: the natural condition of the liquid momentum balance (4.36), "
+                            "p_L = 0, which draws water in at suction as if a film of water "
+                            "covered the surface (the thesis; 0.014 m3/m into the crest of "
+                            "the levee drawdown, doc/verification.md). The implicit seepage "
+                            "path keeps its natural condition, no flux")
+                .byDefault(std::string("atmosphere"))
+                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

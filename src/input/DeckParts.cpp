@@ -456,6 +456,7 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
   spec.hydraulic_loads_at_points = hydraulic_loads == kHydraulicLoadsByMesh
                                        ? hydraulicLoadsAtPoints(mesh)
                                        : hydraulic_loads == "at boundary points";
+  spec.atmosphere_on_free_surfaces = stage.word("Surfaces Without Condition") == "atmosphere";
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

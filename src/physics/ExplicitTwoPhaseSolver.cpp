@@ -60,6 +60,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   for (const auto& material : materials)
     if (material.phase != PhaseModel::Dry) {
       reference_liquid_density_ = material.liquid.density;
+      carries_liquid_ = true;
       break;
     }
   boundary_fields_.allocate(mesh.numNodes());
@@ -128,6 +129,9 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   boundaries_ = StageBoundaryConditions(mesh_, stage);
   side_walls_.configure(boundaries_.sideWalls(), mesh_.numNodes());
   hydraulic_ = HydraulicConditions(mesh_, stage, time_);  // tables count from the stage start
+  // The atmosphere's rule needs liquid to act on, and a held p_L takes no flux.
+  if (!carries_liquid_ || stage.hold_liquid_pressure) hydraulic_.dropAtmosphere();
+  if (hydraulic_.atmosphere()) hydraulic_.setOtherLiquidRules(otherLiquidRules());
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
   free_boundary_stale_ = true;
   hydraulic_plan_current_ = false;
@@ -323,7 +327,7 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     hydraulic_plan_current_ = true;
     planned_gravity_ = gravity_;
     const FluxCorrectionList& corrections = hydraulic_.corrections();
-    markConditionedNodes(corrections.node, hydraulic_.loads().node);
+    markConditionedNodes(hydraulic_.conditionedNodes());
     if (static_cast<int>(correction_locks_.extent(0)) != corrections.count())
       correction_locks_ =
           Kokkos::View<unsigned*, MemSpace>("correction_locks", corrections.count());
@@ -364,16 +368,35 @@ void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
   addPointBorneLoads(point_borne_loads_, nodes_in_use_, grid_);
 }
 
-void ExplicitTwoPhaseSolver::markConditionedNodes(Kokkos::View<const int*, MemSpace> corrected,
-                                                  Kokkos::View<const int*, MemSpace> loaded) {
+void ExplicitTwoPhaseSolver::markConditionedNodes(Kokkos::View<const int*, MemSpace> nodes) {
   if (static_cast<int>(conditioned_i_.extent(0)) != mesh_.numNodes())
     conditioned_i_ = Kokkos::View<unsigned char*, MemSpace>("conditioned_i", mesh_.numNodes());
   Kokkos::deep_copy(conditioned_i_, 0);
   const auto flags = conditioned_i_;
-  for (const auto& nodes : {corrected, loaded})
-    Kokkos::parallel_for(
-        "mark_conditioned_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
-        KOKKOS_LAMBDA(const int j) { flags(nodes(j)) = 1; });
+  Kokkos::parallel_for(
+      "mark_conditioned_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodes.extent(0)),
+      KOKKOS_LAMBDA(const int j) { flags(nodes(j)) = 1; });
+}
+
+std::vector<unsigned char> ExplicitTwoPhaseSolver::otherLiquidRules() const {
+  using H = HydraulicConditions;
+  std::vector<unsigned char> rules(mesh_.numNodes(), 0);
+  const NodalConstraints& constraints = boundaries_.constraints();
+  for (int i = 0; i < mesh_.numNodes(); ++i) {
+    const unsigned flags = constraints.flagsOf(i);
+    rules[i] =
+        ((flags & kLiquidLockedX) ? H::kLockedX : 0) | ((flags & kLiquidLockedY) ? H::kLockedY : 0);
+  }
+  // an impermeable frictional wall (a membrane) seals its nodes along its normal, which
+  // need not be axis-aligned: both bits
+  const FrictionalContact& contact = boundaries_.frictionalContact();
+  const auto nodes = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), contact.nodes());
+  const auto flags = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), contact.flags());
+  for (int j = 0; j < contact.count(); ++j)
+    if (flags(j) & kContactImpermeable) rules[nodes(j)] |= H::kLockedX | H::kLockedY;
+  for (const int node : boundaries_.prescribedPressureNodes())
+    rules[node] |= H::kPressurePrescribed;
+  return rules;
 }
 
 void ExplicitTwoPhaseSolver::correctHydraulicAccelerations(Real dt) {

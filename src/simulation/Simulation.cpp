@@ -523,7 +523,8 @@ void Simulation::accumulateBoundaryFluxes() {
     flux_last_step_[k] = volumes[c];
     flux_cumulative_[k] += volumes[c];
   }
-  if (!conditions.empty()) flux_all_nodes_cumulative_ += volumes[conditions.size()];
+  // (all nodes: also in a stage whose only rule is the atmosphere's, which passes liquid)
+  flux_all_nodes_cumulative_ += volumes[conditions.size()];
 }
 
 // (P10) The implicit path's per-condition columns: the volume through each condition in its

@@ -3,6 +3,7 @@
 // the per-step plan. Every expected value is computed by hand in the comments.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -485,6 +486,7 @@ TEST(HydraulicConditions, SeepageAboveTheLevelAndInfiltrationNodes) {
   boundary.detect(test::seedUniform(mesh));
   StageSpec stage;
   stage.name = "flood";
+  stage.atmosphere_on_free_surfaces = false;  // the conditions' own nodes only
   BoundarySpec head = headCondition("river", 1.0, ZoneSpec{});
   head.hydraulic.above = AboveLevel::SeepageFace;
   BoundarySpec rain;
@@ -522,6 +524,72 @@ TEST(HydraulicConditions, SeepageAboveTheLevelAndInfiltrationNodes) {
   } catch (const InputError& error) {
     EXPECT_EQ(error.where(), "Stages/flood/Boundary Conditions/rain");
   }
+}
+
+TEST(HydraulicConditions, TheAtmosphereTakesTheFreeSidesNoConditionCoversUnlessSealed) {
+  // 2 x 2 block of 1 m quads (nodes j * 3 + i), rain on the top side set, the left side
+  // sealed (its nodes 0, 3, 6 locked along x). With the atmosphere (the default) the free
+  // sides no condition covers and no lock seals get seepage-face corrections with the
+  // normal of those sides: the bottom (nodes 0, 1, 2; node 0's normal (0, -1), the sealed
+  // left side left out) and the right (2, 5; node 2's normal (1, -1) / sqrt 2). The left
+  // side's middle node 3 is on sealed sides only: none. The top's nodes keep the rain (the
+  // condition claims first). The atmosphere owns no node and conditions none.
+  const Mesh mesh = test::rectangleMesh(2, 2, 2.0, 2.0, ElementType::Quad4);
+  FreeBoundary boundary(mesh);
+  boundary.detect(test::seedUniform(mesh));
+  StageSpec stage;
+  stage.name = "rain";
+  BoundarySpec rain;
+  rain.name = "rain";
+  rain.kind = BoundaryKind::Infiltration;
+  rain.side_set = "top";
+  rain.hydraulic.series.value = 2e-6;
+  stage.boundaries = {rain};
+  HydraulicConditions conditions(mesh, stage);
+  ASSERT_TRUE(conditions.atmosphere());
+  std::vector<unsigned char> rules(static_cast<std::size_t>(mesh.numNodes()), 0);
+  rules.at(0) = rules.at(3) = rules.at(6) = HydraulicConditions::kLockedX;
+  conditions.setOtherLiquidRules(rules);
+  conditions.plan(0.0, 9.81, boundary);
+  const auto node = test::hostCopy(conditions.corrections().node);
+  const auto kind = test::hostCopy(conditions.corrections().kind);
+  const auto normal = test::hostCopy(conditions.corrections().normal);
+  const std::map<int, std::array<Real, 2>> atmosphere{
+      {0, {0.0, -1.0}}, {1, {0.0, -1.0}}, {2, {M_SQRT1_2, -M_SQRT1_2}}, {5, {1.0, 0.0}}};
+  ASSERT_EQ(conditions.corrections().count(), 7);  // 0, 1, 2, 5 and the rain's 6, 7, 8
+  for (int j = 0; j < 7; ++j) {
+    const auto found = atmosphere.find(node(j));
+    if (found == atmosphere.end()) {
+      EXPECT_GE(node(j), 6);
+      EXPECT_EQ(kind(j), static_cast<int>(FluxCorrection::Infiltration));
+      continue;
+    }
+    EXPECT_EQ(kind(j), static_cast<int>(FluxCorrection::SeepageFace)) << node(j);
+    EXPECT_NEAR(normal(j, 0), found->second[0], 1e-15) << node(j);
+    EXPECT_NEAR(normal(j, 1), found->second[1], 1e-15) << node(j);
+  }
+  const auto owned = test::hostCopy(conditions.ownership().node);
+  const auto conditioned = test::hostCopy(conditions.conditionedNodes());
+  ASSERT_EQ(conditions.ownership().count(), 3);
+  ASSERT_EQ(conditioned.extent(0), 3u);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_EQ(owned(j), 6 + j);
+    EXPECT_EQ(conditioned(j), 6 + j);
+  }
+  // the bottom's p_L prescribed (`liquid pressure` nodes 0, 1, 2): its sides and nodes are
+  // the deck's, and the atmosphere keeps node 5 only (normal (1, 0), the right side)
+  for (const std::size_t node : {0u, 1u, 2u})
+    rules.at(node) |= HydraulicConditions::kPressurePrescribed;
+  conditions.setOtherLiquidRules(rules);
+  conditions.plan(0.0, 9.81, boundary);
+  ASSERT_EQ(conditions.corrections().count(), 4);  // 5 and the rain's 6, 7, 8
+  EXPECT_EQ(test::hostCopy(conditions.corrections().node)(0), 5);
+  EXPECT_NEAR(test::hostCopy(conditions.corrections().normal)(0, 0), 1.0, 1e-15);
+  // `Surfaces Without Condition: open`: the rain's three nodes only
+  stage.atmosphere_on_free_surfaces = false;
+  HydraulicConditions open(mesh, stage);
+  open.plan(0.0, 9.81, boundary);
+  EXPECT_EQ(open.corrections().count(), 3);
 }
 
 TEST(HydraulicConditions, LinearSuctionAboveTheLevelLoadsTheLiquidOnly) {

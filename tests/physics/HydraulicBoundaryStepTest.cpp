@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -272,6 +273,59 @@ TEST(HydraulicStep, ASeepageFaceOnARollerLetsNoWaterIntoSoilAtSuction) {
   std::printf("[ face ] in %.9g m^3/m, storage change %.9g m^3/m in 0.2 s\n", inflow, storage);
   EXPECT_LT(std::fabs(inflow), 1e-15);
   EXPECT_LT(std::fabs(storage), 1e-12);
+}
+
+/// The silt column of the rain tests at a uniform p_L (Pa), sealed sides and base, its top
+/// under no hydraulic condition, in a fixed-skeleton stage without gravity for `duration`
+/// (s) with the free sides' rule `atmosphere` (or open): the points' storage change and the
+/// sum over all nodes (m^3/m; accounted only with the atmosphere, the stage's one rule).
+std::array<Real, 2> uncoveredTopBalance(Real pressure, bool atmosphere, Real duration,
+                                        bool top_pressure_zero = false) {
+  SiltColumn column(10, 0.1, 1.0, pressure, 4.905e-4);
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
+  if (top_pressure_zero) boundaries.push_back(test::liquidPressure("water on top", "top", 0.0));
+  StageSpec stage = test::makeStage("wait", SolverKind::FixedSkeleton, 0.0, 0.0, boundaries,
+                                    {CriterionKind::UnsaturatedLiquid});
+  stage.atmosphere_on_free_surfaces = atmosphere;
+  solver.beginStage(stage);
+  const Real initial = liquidMass(column.points);
+  Real all_nodes = 0;
+  test::runUntil(solver, duration, [&] { all_nodes += solver.boundaryFluxVolumes().back(); });
+  return {(liquidMass(column.points) - initial) / solver.referenceLiquidDensity(), all_nodes};
+}
+
+TEST(HydraulicStep, AFreeSurfaceUnderNoConditionLetsNoWaterInFromTheAirAtSuction) {
+  // The column at a suction of 100 kPa with its top under no condition. Open (the natural
+  // p_L = 0 of 4.36, the only rule until 30 Nov 2026) the top draws water in as if a film
+  // of water covered it: the crest of the levee drawdown gained 0.014 m^3/m that way. The
+  // atmosphere (the default) closes it: nothing enters, to round-off, and the nodes' sum
+  // says so. (The sealed sides are left out of the atmosphere: the top's corner nodes are
+  // corrected along y only, with the top's normal.)
+  const auto open = uncoveredTopBalance(-1e5, false, 0.5);
+  const auto atmosphere = uncoveredTopBalance(-1e5, true, 0.5);
+  std::printf("[ top at suction ] storage change open %.9g, atmosphere %.9g m^3/m in 0.5 s\n",
+              open[0], atmosphere[0]);
+  EXPECT_GT(open[0], 1e-6);  // the open top sucks (k large, 100 kPa: far more than 1e-6)
+  EXPECT_LT(std::fabs(atmosphere[0]), 1e-6 * open[0]);
+  EXPECT_NEAR(atmosphere[1], atmosphere[0], 1e-9 * open[0]);
+  // A `liquid pressure` of 0 on the top says there is water to take (V2's boundary): the
+  // atmosphere leaves such a side alone and the top sucks as the open one, bit for bit.
+  const auto watered = uncoveredTopBalance(-1e5, true, 0.5, true);
+  EXPECT_EQ(watered[0], uncoveredTopBalance(-1e5, false, 0.5, true)[0]);
+  EXPECT_GT(watered[0], 1e-6);
+}
+
+TEST(HydraulicStep, AFreeSurfaceUnderNoConditionDrainsAtPositivePressure) {
+  // The same column saturated at p_L = +10 kPa: water leaves through the top as through the
+  // open surface, the atmosphere does not hold it back (it acts only against inflow), so
+  // both rules give the same storage change, bit for bit.
+  const auto open = uncoveredTopBalance(1e4, false, 0.5);
+  const auto atmosphere = uncoveredTopBalance(1e4, true, 0.5);
+  std::printf("[ top at +10 kPa ] storage change open %.9g, atmosphere %.9g m^3/m in 0.5 s\n",
+              open[0], atmosphere[0]);
+  EXPECT_LT(open[0], -1e-7);
+  EXPECT_EQ(atmosphere[0], open[0]);
 }
 
 TEST(HydraulicStep, CorrectionKernelKeepsTheMixtureMomentum) {

@@ -42,8 +42,12 @@ Real infiltrationError(MassBalanceForm form, Real time_factor) {
   silt.initial.liquid_pressure = -5e5;
   test::Column column(10, 0.1, 1.0, silt);
   ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  // s = 0 at the top: water stands there to be drawn in (a surface under no condition is the
+  // atmosphere, which has none to give)
+  std::vector<BoundarySpec> boundaries = test::columnBoundaries();
+  boundaries.push_back(test::liquidPressure("water on top", "top", 0.0));
   solver.beginStage(
-      test::makeStage("infiltrate", SolverKind::FixedSkeleton, 0.0, 0.0, test::columnBoundaries(),
+      test::makeStage("infiltrate", SolverKind::FixedSkeleton, 0.0, 0.0, boundaries,
                       {CriterionKind::UnsaturatedLiquid, CriterionKind::Infiltration}));
   const Real ci = 4.905e-4 / (0.3 * 1000 * 9.81 * (0.5 / 8e7 + 1e-6));
   test::runUntil(solver, time_factor / ci);

@@ -147,12 +147,16 @@ class StageBoundaryConditions {
   const std::vector<ImpermeableBoundary>& impermeableBoundaries() const { return impermeable_; }
   const std::vector<TractionBoundary>& tractions() const { return tractions_; }
   const std::vector<LiquidPressureBoundary>& liquidPressures() const { return pressures_; }
+  /// The end nodes of every `liquid pressure` side, p^ = 0 included (which loads nothing),
+  /// possibly repeated: where the deck gives p_L (the atmosphere leaves them alone).
+  const std::vector<int>& prescribedPressureNodes() const { return pressure_nodes_; }
 
  private:
   std::vector<SolidFixity> solid_fixities_;
   std::vector<ImpermeableBoundary> impermeable_;
   std::vector<TractionBoundary> tractions_;
   std::vector<LiquidPressureBoundary> pressures_;
+  std::vector<int> pressure_nodes_;
   NodalConstraints constraints_;
   FrictionalContact frictional_;
   std::optional<SideWallParameters> side_walls_;

@@ -14,6 +14,13 @@
 ///    by the predictor-corrector (4.53-4.59) in the solver;
 ///  - ownership: each node of a condition's sides belongs to the first condition (deck
 ///    order) that claims it, for the liquid volume each condition lets through.
+///  - the atmosphere (`Surfaces Without Condition: atmosphere`, the default): every node of a
+///    free side that no condition covers, and that no condition owns, is corrected as a
+///    seepage-face node, with the normal of those sides: it drains at p_L >= 0 and lets
+///    nothing in at suction. Without it such a surface keeps the natural p_L = 0 of 4.36
+///    and draws water in from the air wherever the soil below is at suction. Its nodes are
+///    owned by no condition (their flux is in the all-nodes total) and are not among
+///    conditionedNodes().
 /// Host loops over the boundary sides only (boundary-sized), a few small copies per step.
 
 #include <string>
@@ -85,7 +92,28 @@ class HydraulicConditions {
   /// begins, the origin of its tables' times unless a condition says `simulation start`.
   HydraulicConditions(const Mesh& mesh, const StageSpec& stage, Real stage_start = 0);
 
-  bool empty() const { return conditions_.empty(); }
+  /// Nothing to plan: no condition, and no atmosphere on the other free sides.
+  bool empty() const { return conditions_.empty() && !atmosphere_; }
+  /// Whether the free sides under no condition get the atmosphere's rule (see above).
+  bool atmosphere() const { return atmosphere_; }
+  /// Switches the atmosphere off (a model without liquid, or a stage holding p_L).
+  void dropAtmosphere() { atmosphere_ = false; }
+  /// What the stage's other conditions already say about the liquid at each mesh node
+  /// (LiquidRuleBits, or'ed; empty: nothing). The atmosphere leaves out
+  ///  - the free sides sealed by impermeable conditions (both end nodes locked along the
+  ///    side's normal: a sealed base, a symmetry axis, a membrane): they pass no liquid to
+  ///    begin with, and a correction confined to the one unlocked direction, nearly
+  ///    perpendicular to the flux weight there, would have to be enormous to change the
+  ///    node's flux (the default scene went unstable in 3 steps with the atmosphere on its
+  ///    sealed base);
+  ///  - the nodes of a prescribed liquid pressure (`liquid pressure`, Sec. 5.4), and the
+  ///    sides between two of them: the deck gives their p_L, in- or outflow as it comes.
+  enum LiquidRuleBits : unsigned char {
+    kLockedX = 1,            ///< the liquid's relative velocity locked along x
+    kLockedY = 2,            ///< ... along y
+    kPressurePrescribed = 4  ///< a `liquid pressure` condition's node
+  };
+  void setOtherLiquidRules(std::vector<unsigned char> rules) { rules_ = std::move(rules); }
   const std::vector<HydraulicCondition>& conditions() const { return conditions_; }
 
   /// Builds this step's loads, corrections and ownership from the current free boundary at
@@ -95,6 +123,9 @@ class HydraulicConditions {
   const NodalLoads& loads() const { return loads_; }
   const FluxCorrectionList& corrections() const { return corrections_; }
   const NodeOwnership& ownership() const { return ownership_; }
+  /// The nodes the conditions load or correct, the atmosphere's excepted (the strain kernel's
+  /// exchange of a lone point: TwoPhaseTransfer.hpp).
+  Kokkos::View<const int*, MemSpace> conditionedNodes() const { return conditioned_nodes_; }
   /// The sides each condition used in the last plan (host copies, for tests and plots).
   const std::vector<std::vector<FreeSide>>& sidesUsed() const { return sides_used_; }
   /// The value of each condition's time series at the last plan's time (a pressure linear
@@ -112,6 +143,9 @@ class HydraulicConditions {
                                 const FreeBoundary& boundary) const;
 
   std::vector<HydraulicCondition> conditions_;
+  bool atmosphere_ = false;
+  std::vector<unsigned char> rules_;                ///< LiquidRuleBits per mesh node; empty: none
+  Kokkos::View<int*, MemSpace> conditioned_nodes_;  ///< corrected by a condition, or loaded
   NodalLoads loads_;
   FluxCorrectionList corrections_;
   NodeOwnership ownership_;

@@ -302,6 +302,11 @@ struct StageSpec {
   /// carry those nodes (physics/PointBorneLoads.hpp); `by mesh` (the default): true on a
   /// rectangle with Regions, false on meshes that follow the soil's outline.
   bool hydraulic_loads_at_points = false;
+  /// `Surfaces Without Condition`: `atmosphere` (true, the default) gives every free side
+  /// under no hydraulic condition the rule of a seepage face (it drains at p_L >= 0 and lets
+  /// no liquid in at suction: the air has no water to give); `open` (false, the thesis)
+  /// leaves the natural condition of 4.36, p_L = 0, which draws water in at suction.
+  bool atmosphere_on_free_surfaces = true;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

@@ -326,16 +326,20 @@ class ExplicitTwoPhaseSolver {
   /// (the flux correction acts in the unlocked directions only, and through the liquid alone
   /// where the solid is fixed), refreshed with each plan.
   Kokkos::View<unsigned*, MemSpace> correction_locks_;
-  /// 1 at the nodes the current plan's hydraulic conditions act on (loads, corrections): a
-  /// point touching one is not alone for the liquid (interpolateVelocityGradients).
+  /// 1 at the nodes the current plan's hydraulic conditions act on (loads, corrections; not
+  /// the atmosphere's): a point touching one is not alone for the liquid
+  /// (interpolateVelocityGradients).
   Kokkos::View<unsigned char*, MemSpace> conditioned_i_;
-  void markConditionedNodes(Kokkos::View<const int*, MemSpace> corrected,
-                            Kokkos::View<const int*, MemSpace> loaded);
+  void markConditionedNodes(Kokkos::View<const int*, MemSpace> nodes);
+  /// What the stage's impermeable, frictional-wall and liquid-pressure conditions say about
+  /// the liquid at each node, for the atmosphere (HydraulicConditions::setOtherLiquidRules).
+  std::vector<unsigned char> otherLiquidRules() const;
   bool free_boundary_stale_ = true;      ///< a point changed element since the last detection
   bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
   Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
   Real reference_liquid_density_ = 1000;
+  bool carries_liquid_ = false;    ///< some material carries liquid
   VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
   LiquidHeadStabilisation head_stabilisation_;  ///< against the Tri3 p_L checkerboard
   IntraElementSeepage element_seepage_;         ///< p_L differences inside an element (P11)
