@@ -478,6 +478,17 @@ TEST(HydraulicConditions, LoadFollowsTheMovingSurface) {
   EXPECT_EQ(boundary.detections(), 2);
 }
 
+/// A rain condition named "rain" of `flux` (m/s) on a mesh side set.
+BoundarySpec rainOnSideSet(const std::string& side_set, Real flux, bool ponding) {
+  BoundarySpec rain;
+  rain.name = "rain";
+  rain.kind = BoundaryKind::Infiltration;
+  rain.side_set = side_set;
+  rain.hydraulic.series.value = flux;
+  rain.hydraulic.ponding = ponding;
+  return rain;
+}
+
 TEST(HydraulicConditions, SeepageAboveTheLevelAndInfiltrationNodes) {
   // 2 x 2 block, head 1.0 with a seepage face above: the boundary nodes above y = 1 (the
   // three top nodes at y = 2) get a seepage-face correction; nodes at y <= 1 do not.
@@ -489,12 +500,7 @@ TEST(HydraulicConditions, SeepageAboveTheLevelAndInfiltrationNodes) {
   stage.atmosphere_on_free_surfaces = false;  // the conditions' own nodes only
   BoundarySpec head = headCondition("river", 1.0, ZoneSpec{});
   head.hydraulic.above = AboveLevel::SeepageFace;
-  BoundarySpec rain;
-  rain.name = "rain";
-  rain.kind = BoundaryKind::Infiltration;
-  rain.side_set = "top";
-  rain.hydraulic.series.value = 2e-6;
-  rain.hydraulic.ponding = true;
+  BoundarySpec rain = rainOnSideSet("top", 2e-6, true);
   stage.boundaries = {head, rain};
   HydraulicConditions conditions(mesh, stage);
   conditions.plan(0.0, 9.81, boundary);
@@ -539,12 +545,7 @@ TEST(HydraulicConditions, TheAtmosphereTakesTheFreeSidesNoConditionCoversUnlessS
   boundary.detect(test::seedUniform(mesh));
   StageSpec stage;
   stage.name = "rain";
-  BoundarySpec rain;
-  rain.name = "rain";
-  rain.kind = BoundaryKind::Infiltration;
-  rain.side_set = "top";
-  rain.hydraulic.series.value = 2e-6;
-  stage.boundaries = {rain};
+  stage.boundaries = {rainOnSideSet("top", 2e-6, false)};
   HydraulicConditions conditions(mesh, stage);
   ASSERT_TRUE(conditions.atmosphere());
   std::vector<unsigned char> rules(static_cast<std::size_t>(mesh.numNodes()), 0);
