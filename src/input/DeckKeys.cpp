@@ -182,6 +182,16 @@ ListSchema retentionKeys() {
                     .above(0)
                     .atMost(1)
                     .byDefault(1.0));
+  retention.add(
+      KeySpec::real(
+          "Occluded Air Pressure (Pa)", "Pa",
+          "absolute pressure p_a of the air occluded in the pores at p_L = 0 (the "
+          "atmosphere's, 101325 Pa): the 1 - S_max of air left at zero suction then "
+          "compresses by Boyle's law, S_L = 1 - (1 - S_max) p_a / (p_a + p_L) at p_L > 0, "
+          "and the liquid's storage there is that of an air-water mixture; 0: the air "
+          "does not compress, S_L = S_max at p_L >= 0 (the thesis; doc/theory.md Sec. 3.8)")
+          .atLeast(0)
+          .byDefault(0.0));
   return retention;
 }
 

@@ -93,6 +93,7 @@ RetentionSpec parseRetention(const DeckSection& retention) {
   }
   spec.saturation_min = retention.real("Minimum Saturation");
   spec.saturation_max = retention.real("Maximum Saturation");
+  spec.occluded_air_pressure = retention.real("Occluded Air Pressure (Pa)");
   return spec;
 }
 

@@ -188,8 +188,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         gathered_p(p, kGatheredConstrainedModulus) = material.constrained_modulus;
         gathered_p(p, kGatheredSaturationSlope) =
             material.phase == PhaseModel::Unsaturated
-                ? saturationSuctionDerivative(material.retention,
-                                              suctionOfPressure(pts.pressure_liquid(p)))
+                ? saturationSuctionDerivativeAtPressure(material.retention, pts.pressure_liquid(p))
                 : 0;
         const Real held_to = e < 0                           ? kHeldToNone
                              : carriesLiquid(material.phase) ? kHeldToLiquid

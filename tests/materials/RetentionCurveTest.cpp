@@ -149,5 +149,66 @@ TEST(RetentionCurve, SaturationAndSlopeTogetherEqualEachAlone) {
     }
 }
 
+// Occluded air (RetentionSpec::occluded_air_pressure): Boyle's law for the 1 - S_max of air
+// at p_L > 0. S_max 0.8, p_a 100 kPa: at p_L = 100 kPa the air has half its volume,
+// S_L = 1 - 0.2 / 2 = 0.9, dS_L/dp_L = 0.2 * 1e5 / (2e5)^2 = 5e-7 1/Pa.
+RetentionSpec occludedAirCurve() {
+  RetentionSpec spec = vanGenuchtenCurve();
+  spec.saturation_max = 0.8;
+  spec.occluded_air_pressure = 1e5;
+  return spec;
+}
+
+TEST(RetentionOccludedAir, HandValues) {
+  const RetentionSpec spec = occludedAirCurve();
+  EXPECT_DOUBLE_EQ(saturationAtPressure(spec, 1e5), 0.9);
+  EXPECT_DOUBLE_EQ(saturationSuctionDerivativeAtPressure(spec, 1e5), -5e-7);
+  EXPECT_DOUBLE_EQ(saturationAtPressure(spec, 3e5), 0.95);  // a quarter of the air left
+  // at p_L = 0+ the storage's slope is (1 - S_max) / p_a = 2e-6 1/Pa, 200 x n S/K_L of water
+  EXPECT_DOUBLE_EQ(saturationSuctionDerivativeAtPressure(spec, 1e-300), -2e-6);
+}
+
+TEST(RetentionOccludedAir, ContinuousAtZeroAndTheCurveAtSuction) {
+  const RetentionSpec spec = occludedAirCurve();
+  EXPECT_EQ(saturationAtPressure(spec, 0.0), 0.8);
+  EXPECT_NEAR(saturationAtPressure(spec, 1e-3), 0.8, 1e-8);
+  for (const Real p : {-1.0, -250.0, -3000.0, -4.7e4}) {
+    EXPECT_EQ(saturationAtPressure(spec, p), saturation(spec, -p)) << p;
+    EXPECT_EQ(saturationSuctionDerivativeAtPressure(spec, p), saturationSuctionDerivative(spec, -p))
+        << p;
+  }
+  // the derivative against a central difference at p_L > 0 (d/ds = -d/dp)
+  for (const Real p : {500.0, 2e4, 3e5}) {
+    const Real h = 1e-4 * p;
+    const Real difference =
+        -(saturationAtPressure(spec, p + h) - saturationAtPressure(spec, p - h)) / (2 * h);
+    EXPECT_NEAR(saturationSuctionDerivativeAtPressure(spec, p), difference,
+                1e-6 * std::fabs(difference))
+        << p;
+  }
+}
+
+TEST(RetentionOccludedAir, RigidAirKeepsTheMaximumSaturationAtPositivePressure) {
+  // p_a = 0 (the default, the thesis): S_max and no slope at every p_L >= 0, to the bit as
+  // the suction functions at s = 0.
+  RetentionSpec spec = occludedAirCurve();
+  spec.occluded_air_pressure = 0;
+  for (const Real p : {0.0, 1e-3, 1e5, 1e7}) {
+    EXPECT_EQ(saturationAtPressure(spec, p), saturation(spec, 0.0)) << p;
+    EXPECT_EQ(saturationSuctionDerivativeAtPressure(spec, p), 0.0) << p;
+  }
+}
+
+TEST(RetentionOccludedAir, SaturationAndSlopeAtPressureEqualEachAlone) {
+  for (const Real air : {0.0, 1e5})
+    for (const Real p : {-4.7e4, -250.0, 0.0, 1e-3, 2e4, 3e5}) {
+      RetentionSpec spec = occludedAirCurve();
+      spec.occluded_air_pressure = air;
+      const SaturationAndSlope both = saturationAndSlopeAtPressure(spec, p);
+      EXPECT_EQ(both.saturation, saturationAtPressure(spec, p)) << p;
+      EXPECT_EQ(both.slope, saturationSuctionDerivativeAtPressure(spec, p)) << p;
+    }
+}
+
 }  // namespace
 }  // namespace argine

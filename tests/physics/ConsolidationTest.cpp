@@ -98,6 +98,59 @@ TEST(Consolidation, TerzaghiColumnWithImplicitDrag) {
   EXPECT_LT(errors[3], 0.02);
 }
 
+/// The undrained p_L under q = 10 kPa on top of a column of S_max = 0.8 soil at p_L = 0 (the
+/// 20 % of air occluded), with the air rigid (the thesis) or compressing by Boyle's law at
+/// p_a = 101.325 kPa (Retention/Occluded Air Pressure). Oedometric, E_oed = 1e7 Pa (nu = 0),
+/// n = 0.4, K_L = 2.2e9 Pa, k = 1e-8 m/s (drainage reaches a few cm below the top in 0.6 s).
+Real undrainedPressureOfOccludedAir(Real air_pressure, int& lower_points) {
+  MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 1e7, 0.0, 0.4, 1e-8);
+  soil.retention.model = RetentionModel::VanGenuchten;
+  soil.retention.reference_pressure = 19e3;
+  soil.retention.lambda = 0.75;
+  soil.retention.saturation_min = 0.16;
+  soil.retention.saturation_max = 0.8;
+  soil.retention.occluded_air_pressure = air_pressure;
+  test::Column column(10, 0.1, 1.0, soil);
+  auto boundaries = test::columnBoundaries();
+  boundaries.push_back(test::traction("load", "top", 0.0, -1e4));
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  StageSpec stage = makeStage("load", SolverKind::QuasiStatic, 0.0, 0.7, boundaries,
+                              {CriterionKind::CflUndrained, CriterionKind::Consolidation});
+  stage.implicit_drag = true;
+  solver.beginStage(stage);
+  runUntil(solver, 0.6);  // damped waves settle in about 0.6 s
+  const auto pressure = hostCopy(column.points.pressure_liquid);
+  const auto y0 = hostCopy(column.points.initial_position);
+  Real sum = 0;
+  lower_points = 0;
+  for (int p = 0; p < column.points.count; ++p)
+    if (y0(p, 1) < 0.5) {
+      sum += pressure(p);
+      lower_points += 1;
+    }
+  return sum / lower_points;
+}
+
+TEST(Consolidation, OccludedAirTakesLittleOfAnUndrainedLoadWhereRigidAirTakesMoreThanAll) {
+  // Hand values (no drainage; Bishop chi = S_L; the skeleton's strain eps from the liquid's
+  // mass, (n0 - eps) S_L(p) rho_L(p) = n0 S_max rho_L0; the load q = E_oed eps + S_L(p) p):
+  //   rigid air:  S_L = 0.8, eps = 2.27e-6:   p = 12,472 Pa = 1.247 q (q / S_max, less the
+  //               water's compression): above the load, as if the pores pushed harder than
+  //               the load presses;
+  //   Boyle air:  S_L(p) = 1 - 0.2 p_a / (p_a + p), eps = 9.24e-4: p = 947.1 Pa = 0.095 q
+  //               (the skeleton takes the rest).
+  int lower = 0;
+  const Real rigid = undrainedPressureOfOccludedAir(0.0, lower);
+  EXPECT_EQ(lower, 20);
+  EXPECT_NEAR(rigid, 12471.7, 0.005 * 12471.7);
+  const Real boyle = undrainedPressureOfOccludedAir(101325.0, lower);
+  EXPECT_NEAR(boyle, 947.07, 0.005 * 947.07);
+  std::printf(
+      "[ occluded air ] mean p_L of the lower half: rigid %.1f Pa (hand 12471.7), Boyle "
+      "%.2f Pa (hand 947.07)\n",
+      rigid, boyle);
+}
+
 TEST(Consolidation, HeldLiquidPressureGivesTheDrainedResponse) {
   // `Liquid Pressure: held` (the hand-over after implicit seepage): Terzaghi's column, the
   // same 10 kPa on top, but the liquid moves with the solid and p_L stays 0, so the skeleton

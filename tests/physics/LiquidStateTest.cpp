@@ -67,5 +67,27 @@ TEST(LiquidState, UnsaturatedPressureIsFoundFromAGuessWhereTheSaturationIsZero) 
     EXPECT_NEAR(pressureOfLiquidContent(m, content, guess), p, 1e-13 * kBulk) << guess;
 }
 
+TEST(LiquidState, OccludedAirMakesThePositivePressureSoftAndIsInvertedExactly) {
+  // S_max = 0.95 with its 5 % of air occluded at p_a = 101.325 kPa: the content S_L rho_L at
+  // p_L > 0 is inverted to the root, and one more kilogram per cubic metre of pore space
+  // raises p_L by about 2 kPa instead of K_L / rho_L0 = 2.2 MPa: by Boyle alone
+  // 1000 * 0.05 p / (p_a + p) = 1, p = p_a / 49 = 2067.9 Pa; the water's own compression
+  // takes 0.09 % of it.
+  PointMaterial m = material(PhaseModel::Unsaturated);
+  m.retention.occluded_air_pressure = 101325;
+  auto content = [&](Real p) {
+    return saturationAtPressure(m.retention, p) * liquidDensity(m.liquid, p);
+  };
+  for (const Real p : {1.0, 5e3, 1e5, 2e6})
+    for (const Real guess : {0.0, -1e4, 2 * p})
+      EXPECT_NEAR(pressureOfLiquidContent(m, content(p), guess), p, 1e-13 * kBulk)
+          << p << " from " << guess;
+  const Real rise = pressureOfLiquidContent(m, content(0.0) + 1.0, 0.0);
+  EXPECT_NEAR(rise, 101325.0 / 49, 0.002 * 101325.0 / 49);
+  EXPECT_LT(rise, 101325.0 / 49);
+  m.retention.occluded_air_pressure = 0;  // rigid: the water's stiffness
+  EXPECT_GT(pressureOfLiquidContent(m, content(0.0) + 1.0, 0.0), 1e6);
+}
+
 }  // namespace
 }  // namespace argine

@@ -67,6 +67,10 @@ struct RetentionSpec {
   Real gardner_alpha = 0;       ///< alpha (1/Pa), Gardner exponential
   Real saturation_min = 0;      ///< S_min (-)
   Real saturation_max = 1;      ///< S_max (-)
+  /// p_a (Pa): absolute pressure of the air occluded in the pores at p_L = 0. With p_a > 0
+  /// the 1 - S_max of air left at p_L >= 0 compresses by Boyle's law (occludedAirSaturation);
+  /// 0: it does not, S_L = S_max at every p_L >= 0 (the thesis).
+  Real occluded_air_pressure = 0;
 };
 
 struct ConductivitySpec {

@@ -14,6 +14,17 @@
 ///   linear (Eq. 5.6 / 4.27): S_L = S_max - a_v s, clipped below at S_min
 ///   van Genuchten (Eq. 4.28): S_e = [1 + (s / p_ref)^(1/(1-lambda))]^(-lambda)
 ///   Gardner exponential:       S_e = exp(-alpha s)
+///
+/// Occluded air (an option, RetentionSpec::occluded_air_pressure p_a > 0): below S_max = 1
+/// the air left in the pores at zero suction is occluded, and at p_L > 0 it compresses by
+/// Boyle's law at constant mass, its absolute pressure p_a + p_L:
+///   S_L(p_L) = 1 - (1 - S_max) p_a / (p_a + p_L),   dS_L/dp_L = (1 - S_max) p_a / (p_a + p_L)^2,
+/// continuous with S_max at p_L = 0. It turns the liquid's storage at p_L > 0 from
+/// n S_L / K_L (water's, 1e-8 1/Pa) into about n (1 - S_max) / p_a (2e-6 1/Pa with 20 % air),
+/// as for any air-water mixture (Fredlund & Rahardjo, Soil Mechanics for Unsaturated Soils,
+/// 1993; dissolution of the air in the water neglected). The
+/// *AtPressure functions take p_L (compression positive) and give it; the suction functions
+/// above keep S_max at s <= 0.
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
@@ -106,6 +117,43 @@ KOKKOS_INLINE_FUNCTION SaturationAndSlope saturationAndSlope(const RetentionSpec
     return {detail::vanGenuchtenSaturation(spec, t), detail::vanGenuchtenSlope(spec, t)};
   }
   return {saturation(spec, suction), saturationSuctionDerivative(spec, suction)};
+}
+
+/// S_L at p_L > 0 with occluded air (file comment); S_max when the air is rigid (p_a = 0).
+KOKKOS_INLINE_FUNCTION Real occludedAirSaturation(const RetentionSpec& spec, Real pressure) {
+  const Real air = spec.occluded_air_pressure;
+  if (!(air > 0)) return spec.saturation_max;
+  return 1 - (1 - spec.saturation_max) * air / (air + pressure);
+}
+
+/// dS_L/ds = -dS_L/dp_L (1/Pa), <= 0, at p_L > 0 with occluded air (0 when rigid).
+KOKKOS_INLINE_FUNCTION Real occludedAirSuctionDerivative(const RetentionSpec& spec, Real pressure) {
+  const Real air = spec.occluded_air_pressure;
+  if (!(air > 0)) return 0;
+  const Real absolute = air + pressure;
+  return -(1 - spec.saturation_max) * air / (absolute * absolute);
+}
+
+/// S_L at the liquid pressure p_L (Pa, compression positive): the curve at the suction
+/// s = -p_L, and the occluded air's S_L at p_L > 0.
+KOKKOS_INLINE_FUNCTION Real saturationAtPressure(const RetentionSpec& spec, Real pressure) {
+  return pressure > 0 ? occludedAirSaturation(spec, pressure) : saturation(spec, -pressure);
+}
+
+/// dS_L/ds (1/Pa) at the liquid pressure p_L: -dS_L/dp_L, the slope the storage of 4.12
+/// takes (liquidContentSlope).
+KOKKOS_INLINE_FUNCTION Real saturationSuctionDerivativeAtPressure(const RetentionSpec& spec,
+                                                                  Real pressure) {
+  return pressure > 0 ? occludedAirSuctionDerivative(spec, pressure)
+                      : saturationSuctionDerivative(spec, -pressure);
+}
+
+/// saturationAndSlope at the liquid pressure p_L.
+KOKKOS_INLINE_FUNCTION SaturationAndSlope saturationAndSlopeAtPressure(const RetentionSpec& spec,
+                                                                       Real pressure) {
+  if (pressure > 0)
+    return {occludedAirSaturation(spec, pressure), occludedAirSuctionDerivative(spec, pressure)};
+  return saturationAndSlope(spec, -pressure);
 }
 
 /// Inverse of saturation(): the suction s >= 0 (Pa) at which S_L = `saturation`, used to

@@ -53,7 +53,7 @@ struct LiquidState {
 /// saturationAndConductivity without the HCC.
 KOKKOS_INLINE_FUNCTION Real saturationOfPressure(const PointMaterial& material, Real pressure) {
   if (material.phase != PhaseModel::Unsaturated) return 1;
-  return saturation(material.retention, suctionOfPressure(pressure));
+  return saturationAtPressure(material.retention, pressure);
 }
 
 /// S_L and k of a liquid-carrying material at p_L, what a point stores (the derivative is
@@ -69,8 +69,11 @@ KOKKOS_INLINE_FUNCTION LiquidState saturationAndConductivity(const PointMaterial
   }
   const Real suction = suctionOfPressure(pressure);
   state.saturation = saturationOfPressure(material, pressure);
+  // k at S_L of the suction: S_max at p_L >= 0, where occluded air compressing does not
+  // reconnect the water's paths (k continuous at s = 0 either way)
   state.conductivity =
-      conductivityAt(material.conductivity, material.retention, suction, state.saturation);
+      conductivityAt(material.conductivity, material.retention, suction,
+                     pressure > 0 ? material.retention.saturation_max : state.saturation);
   return state;
 }
 
@@ -80,7 +83,7 @@ KOKKOS_INLINE_FUNCTION LiquidState liquidState(const PointMaterial& material, Re
   LiquidState state = saturationAndConductivity(material, pressure);
   if (material.phase == PhaseModel::Unsaturated)
     state.saturation_suction_derivative =
-        saturationSuctionDerivative(material.retention, suctionOfPressure(pressure));
+        saturationSuctionDerivativeAtPressure(material.retention, pressure);
   return state;
 }
 
@@ -141,8 +144,7 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
   Real low = -kmath::infinity(), high = kmath::infinity();
   constexpr int kMaxIterations = 60;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    const SaturationAndSlope swrc =
-        saturationAndSlope(material.retention, suctionOfPressure(pressure));
+    const SaturationAndSlope swrc = saturationAndSlopeAtPressure(material.retention, pressure);
     const Real s = swrc.saturation;
     const Real rho = liquidDensity(material.liquid, pressure);
     const Real residual = s * rho - content;

@@ -23,10 +23,9 @@ KOKKOS_INLINE_FUNCTION Real piezometricPressure(const PointMaterial& material, R
 KOKKOS_INLINE_FUNCTION Real pointLiquidStorage(const PointMaterial& material,
                                                const MaterialPoints& points, int p) {
   const Real pressure = points.pressure_liquid(p);
-  const Real ds_ds =
-      material.phase == PhaseModel::Unsaturated
-          ? saturationSuctionDerivative(material.retention, suctionOfPressure(pressure))
-          : 0;
+  const Real ds_ds = material.phase == PhaseModel::Unsaturated
+                         ? saturationSuctionDerivativeAtPressure(material.retention, pressure)
+                         : 0;
   return points.porosity(p) * points.volume(p) *
          liquidContentSlope(points.density_liquid(p), points.saturation(p), ds_ds,
                             material.liquid.bulk_modulus);

@@ -120,7 +120,7 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int 
   Real guess = pressure;
   if (material.phase == PhaseModel::Unsaturated) {  // the explicit (4.12) predictor
     const Real rho = v.points.density_liquid(p), s = v.points.saturation(p);
-    const Real ds_ds = saturationSuctionDerivative(material.retention, suctionOfPressure(pressure));
+    const Real ds_ds = saturationSuctionDerivativeAtPressure(material.retention, pressure);
     guess += (content - s * rho) / liquidContentSlope(rho, s, ds_ds, material.liquid.bulk_modulus);
   }
   const Real next = pressureOfPointLiquid(material, mass, v.points.porosity(p) * volume,
