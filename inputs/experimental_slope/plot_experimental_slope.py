@@ -25,6 +25,7 @@ F < 1.
 """
 import argparse
 import csv
+import glob
 import math
 import os
 import re
@@ -356,10 +357,12 @@ def face_angle(x, y, low=0.5, high=5.0):
 
 # run_variants.sh slow_*: the slow whole test with MC_1, the Hillel and constant HCCs, and
 # without mass scaling in the drawdown (also with the liquid's relative velocity kept at the
-# fixities)
+# fixities); with the occluded air compressing (also with the fixities' relative velocity and
+# air-filled cracks)
 SLOW_VARIANTS = ("experimental_slope_slow_mc1", "experimental_slope_slow_hillel",
                  "experimental_slope_slow_constant", "experimental_slope_slow_ms1",
-                 "experimental_slope_slow_ms1_fixity")
+                 "experimental_slope_slow_ms1_fixity", "experimental_slope_slow_air",
+                 "experimental_slope_slow_air_fixity_cracks")
 
 
 def report_whole_test(results, name, deck):
@@ -399,8 +402,30 @@ def report_whole_test(results, name, deck):
     print(f"  drawdown: largest |u| since its start {du.max():.3f} m; the farthest point at "
           f"y < 0.5 m at x = {x[y < 0.5].max():.2f} m (toe 11.0 m); points that moved > 0.1 m "
           f"in it: {(du > 0.1).sum()} of {len(du)}")
+    report_drawdown_pressures_and_probes(directory, name, start)
     return dict(name=name, fs=fs, rows=rows, x=x, y=y, u=u, directory=directory,
                 drawdown_start=start)
+
+
+def report_drawdown_pressures_and_probes(directory, name, start):
+    """The drawdown's outputs with p_L outside the physical range (diagnostics column), the
+    kinetic energy at its end, and each probe's displacement since its start and peak speed."""
+    diagnostics = read_csv(os.path.join(directory, name + "_diagnostics.csv"))
+    during = diagnostics["time"] >= start - 1e-6
+    outside = diagnostics["unphysical_pressure_points"][during]
+    print(f"  drawdown outputs {during.sum()}: {(outside > 0).sum()} with p_L outside the "
+          f"physical range, at most {int(outside.max())} points; kinetic energy at the end "
+          f"{diagnostics['kinetic_energy_solid'][during][-1]:.2f} J/m")
+    for probe in sorted(glob.glob(os.path.join(directory, name + "_probe_*.csv"))):
+        p = read_csv(probe)
+        k0 = int(np.argmin(np.abs(p["time"] - start)))
+        moved = np.hypot(p["displacement_x"] - p["displacement_x"][k0],
+                         p["displacement_y"] - p["displacement_y"][k0])
+        speed = np.hypot(p["velocity_x"], p["velocity_y"])[k0:]
+        j = int(np.argmax(speed))
+        label = os.path.basename(probe)[len(name + "_probe_"):-len(".csv")]
+        print(f"  probe {label:11s} |u| since the drawdown started {moved[-1]:.3f} m; peak speed "
+              f"{speed[j]:.3f} m/s at {p['time'][k0 + j] - start:.1f} s after")
 
 
 def plot_whole_test(runs, path):

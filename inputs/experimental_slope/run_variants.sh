@@ -4,14 +4,17 @@
 # LEM), and of the whole test with each level held one day, experimental_slope_slow.yaml
 # (slow_*: Table 5.4's MC_1, the thesis' other two HCCs, Hillel r = 2 and constant, and the
 # drawdown without mass scaling, slow_ms1, and with the liquid's relative velocity kept at
-# the fixities too, slow_ms1_fixity).
+# the fixities too, slow_ms1_fixity; and the 20 % of air left at S_max = 0.8 compressing by
+# Boyle's law below the water, slow_air, also with the relative velocity kept at the fixities
+# and the cracks at the cut-off air-filled, slow_air_fixity_cracks, whose drawdown runs 60 s).
 # Each variant deck is written to results/experimental_slope_variants/ and run there, one
 # after another (one run at a time). Usage, from the repository root:
 #
 #   inputs/experimental_slope/run_variants.sh [VARIANT ...]     # default: all of them
 #
 # Variants: mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm
-#           slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity
+#           slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity slow_air
+#           slow_air_fixity_cracks
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -31,6 +34,9 @@ constant='s|Conductivity: {Model: Mualem, Lambda: 0.75, |Conductivity: {Model: c
 ms1='s|Mass Scaling: 100                  # the thesis|Mass Scaling: 1                    # not the thesis|'
 # every explicit and quasi-static stage: the liquid keeps its relative velocity at the fixities
 fixity='s#^\( *\)Solver: \(explicit\|quasi-static\)\(.*\)$#&\n\1Liquid At Solid Fixities: relative velocity#'
+air='s|Minimum Saturation: 0.16, Maximum Saturation: 0.8}|Minimum Saturation: 0.16, Maximum Saturation: 0.8, Occluded Air Pressure (Pa): 101325}|'
+cracks='s|      Mass Balance: complete|      Mass Balance: complete\n      Tension Cracks: air-filled|'
+minute='s|      Duration (s): 30.0|      Duration (s): 60.0|'   # the drawdown stage
 
 changes() {
   case "$1" in
@@ -48,13 +54,16 @@ changes() {
     slow_constant) printf '%s\n' "$constant" ;;
     slow_ms1) printf '%s\n' "$ms1" ;;
     slow_ms1_fixity) printf '%s\n' "$ms1" "$fixity" ;;
+    slow_air) printf '%s\n' "$air" ;;
+    slow_air_fixity_cracks) printf '%s\n' "$air" "$fixity" "$cracks" "$minute" ;;
     *) echo "unknown variant $1" >&2; return 1 ;;
   esac
 }
 
 variants=("$@")
 [ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli
-  patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity)
+  patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity slow_air
+  slow_air_fixity_cracks)
 for v in "${variants[@]}"; do changes "$v" > /dev/null; done
 for v in "${variants[@]}"; do
   case "$v" in
