@@ -13,7 +13,13 @@
 // `open` (the thesis' natural p_L = 0), which lets water in at suction and takes the suction's
 // strength. With the default atmosphere it keeps its suction and stands (largest kinetic
 // energy 4e-4 J/m in 0.8 s; with c' = 0 instead it goes unstable on either rule near the far
-// side at 0.15 s, a defect of its own). The deck keeps `open`: the test is about the pumping.
+// side at 0.15 s, a defect of its own: the slide's shared motion at the fixed base becomes
+// Darcy flux along it (D19) and piles up at the far corner, p_L 16 -> 606 kPa at (1.98, 0.04)
+// m in 0.05 s; with `Liquid At Solid Fixities: relative velocity` it stays within the range
+// to 0.29 s, then 72 points leave it at 0.4 s (up to 219 kPa on the base under the toe), the
+// flow gains energy (5.6 kJ/m of kinetic energy at 0.5 s against 4.5 kJ/m of potential at the
+// start) and throws a point out of the mesh at 0.59 s: not analysed further). The deck keeps
+// `open`: the test is about the pumping.
 #include <gtest/gtest.h>
 
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
