@@ -362,7 +362,8 @@ def face_angle(x, y, low=0.5, high=5.0):
 SLOW_VARIANTS = ("experimental_slope_slow_mc1", "experimental_slope_slow_hillel",
                  "experimental_slope_slow_constant", "experimental_slope_slow_ms1",
                  "experimental_slope_slow_ms1_fixity", "experimental_slope_slow_air",
-                 "experimental_slope_slow_air_fixity_cracks")
+                 "experimental_slope_slow_air_fixity_cracks",
+                 "experimental_slope_slow_ms1_air_fixity")
 
 
 def report_whole_test(results, name, deck):

@@ -6,7 +6,8 @@
 # drawdown without mass scaling, slow_ms1, and with the liquid's relative velocity kept at
 # the fixities too, slow_ms1_fixity; and the 20 % of air left at S_max = 0.8 compressing by
 # Boyle's law below the water, slow_air, also with the relative velocity kept at the fixities
-# and the cracks at the cut-off air-filled, slow_air_fixity_cracks, whose drawdown runs 60 s).
+# and the cracks at the cut-off air-filled, slow_air_fixity_cracks, whose drawdown runs 60 s;
+# and without mass scaling, with the relative velocity at the fixities, slow_ms1_air_fixity).
 # Each variant deck is written to results/experimental_slope_variants/ and run there, one
 # after another (one run at a time). Usage, from the repository root:
 #
@@ -14,7 +15,7 @@
 #
 # Variants: mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli patm k10_patm
 #           slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity slow_air
-#           slow_air_fixity_cracks
+#           slow_air_fixity_cracks slow_ms1_air_fixity
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -56,6 +57,7 @@ changes() {
     slow_ms1_fixity) printf '%s\n' "$ms1" "$fixity" ;;
     slow_air) printf '%s\n' "$air" ;;
     slow_air_fixity_cracks) printf '%s\n' "$air" "$fixity" "$cracks" "$minute" ;;
+    slow_ms1_air_fixity) printf '%s\n' "$ms1" "$air" "$fixity" ;;
     *) echo "unknown variant $1" >&2; return 1 ;;
   esac
 }
@@ -63,7 +65,7 @@ changes() {
 variants=("$@")
 [ ${#variants[@]} -eq 0 ] && variants=(mc1 k10 k10_mc1 fredlund vanapalli k10_fredlund k10_vanapalli
   patm k10_patm slow_mc1 slow_hillel slow_constant slow_ms1 slow_ms1_fixity slow_air
-  slow_air_fixity_cracks)
+  slow_air_fixity_cracks slow_ms1_air_fixity)
 for v in "${variants[@]}"; do changes "$v" > /dev/null; done
 for v in "${variants[@]}"; do
   case "$v" in
