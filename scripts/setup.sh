@@ -9,7 +9,7 @@ packages=(
   trilinos-all-dev libptscotch-dev
   libexodusii-dev libnetcdf-dev
   libeigen3-dev libgtest-dev
-  python3 python3-matplotlib python3-scipy
+  python3 python3-matplotlib python3-scipy python3-yaml   # yaml: scripts/strength_sensitivity.py
   clang libclang-rt-14-dev   # the libFuzzer targets of the `fuzz` tests (scripts/fuzz.sh)
 )
 packages+=("$@")   # callers may ask for more (e.g. the ParaView check)
