@@ -305,7 +305,9 @@ ListSchema materialKeys() {
                       "for a dry point, and the point drains into it above p_L = 0 while it is "
                       "open (doc/theory.md, 'Air-filled tension cracks'); known defect: a "
                       "fixed-skeleton stage on a slid grid body can go unstable with it "
-                      "(doc/verification.md, 'The crack model tested')")
+                      "(doc/verification.md, 'The crack model tested'), and an explicit FLIP "
+                      "stage on a 0.1 m Tri3 levee came apart (doc/verification.md, 'Why the "
+                      "0.1 m run with air-filled cracks comes apart')")
           .when("Phase Model", {"unsaturated"})
           .byDefault(std::string("pore space")));
   material.add(KeySpec::sublist("Solid", solidKeys(), "solid skeleton").require());
