@@ -214,8 +214,8 @@ Real PointRaster::saturation(Real x, Real y) const {
   return interpolate(x, y, &Cell::saturation_volume);
 }
 
-Real PointRaster::surfaceWaterPressure(Real x) const {
-  return std::max(porePressure(x, ground_.at(x)), Real(0));
+Real PointRaster::surfaceWaterPressure(Real x, Real ground_y) const {
+  return std::max(porePressure(x, ground_y), Real(0));
 }
 
 int PointRaster::material(Real x, Real y) const {
@@ -235,7 +235,9 @@ SlopeSection sectionFromPoints(const SectionPoints& points, MaterialStrength str
   };
   section.pore_pressure_field = [raster](Real x, Real y) { return raster->porePressure(x, y); };
   section.water_unit_weight = water_unit_weight;
-  section.ponded_pressure_field = [raster](Real x) { return raster->surfaceWaterPressure(x); };
+  section.ponded_pressure_field = [raster, surface = section.ground](Real x) {
+    return raster->surfaceWaterPressure(x, surface.at(x));
+  };
   section.strength_field = [raster, strength](Real x, Real y, Real u) {
     const int material = raster->material(x, y);
     if (material < 0) return BaseStrength{};

@@ -8,6 +8,7 @@
 // 5 m of water, crest dry) and y = 40 (all under water).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -118,6 +119,27 @@ TEST(PondedWater, FromThePointsAsFromTheWaterLevel) {
   std::cout << "water at y = 30: F from the points " << points << ", from the level " << exact
             << "\n";
   EXPECT_NEAR(points, exact, 0.01 * exact);  // as the dry case: h / H = 1 %
+}
+
+TEST(PondedWater, StandsOnTheGivenGroundNotOnThePointsEnvelope) {
+  // A 2 m x 1 m block of points (h = 0.1 m) under half a metre of water, p_L = 9810 (1.5 -
+  // y): the envelope is y = 1. A ground given 5 cm higher (a deck's outline drawn outside
+  // the points) takes the soil's weight up to y = 1.05 (the slicing), so the water standing
+  // on it is 0.45 m deep; at the envelope it would be 0.5 m (those 5 cm counted twice, as
+  // soil and as water).
+  const SectionPoints pts =
+      acads::latticeBelow(Polyline({0.0, 2.0}, {1.0, 1.0}), 0, 2, 0, 0.1, 20e3,
+                          [](Real, Real y) { return kGammaW * (1.5 - y); });
+  const Polyline ground({0.0, 2.0}, {1.05, 1.05});
+  const MaterialStrength strength = [](int, Real, Real) {
+    return BaseStrength{0, kCohesion, kFriction, 0};
+  };
+  const SlopeSection given = sectionFromPoints(pts, strength, 0, &ground, kGammaW);
+  const SlopeSection envelope = sectionFromPoints(pts, strength, 0, nullptr, kGammaW);
+  for (const Real x : {0.13, 0.77, 1.21, 1.9}) {
+    EXPECT_NEAR(given.pondedPressure(x), kGammaW * 0.45, 1e-6) << x;
+    EXPECT_NEAR(envelope.pondedPressure(x), kGammaW * 0.5, 1e-6) << x;
+  }
 }
 
 }  // namespace

@@ -62,10 +62,11 @@ class PointRaster {
   /// S_L at (x, y) (-), as porePressure().
   Real saturation(Real x, Real y) const;
   /// The pressure of water standing on the ground at x (Pa, >= 0): porePressure() at the
-  /// envelope, so that under a water level the weight of the standing water and the pore
-  /// pressures below come from the same planes; 0 where it is not positive (a dry or
-  /// unsaturated surface).
-  Real surfaceWaterPressure(Real x) const;
+  /// ground's height there (`ground_y`; the envelope's by default), so that under a water
+  /// level the weight of the standing water and the pore pressures below come from the same
+  /// planes; 0 where it is not positive (a dry or unsaturated surface).
+  Real surfaceWaterPressure(Real x, Real ground_y) const;
+  Real surfaceWaterPressure(Real x) const { return surfaceWaterPressure(x, ground_.at(x)); }
   /// The material of the largest volume in the cell at (x, y) or, if it is empty, in the
   /// nearest cell with points of its column; -1 if the column is empty.
   int material(Real x, Real y) const;
@@ -96,7 +97,9 @@ class PointRaster {
 /// The section of `points`: ground from the raster's envelope (or `ground` if given, e.g. the
 /// deck's surface), floor at the lowest point, column weights and pore pressures from the
 /// raster, strength from `strength` at each base's material, p_L and S_L, water standing on
-/// the ground from the surface points' p_L (surfaceWaterPressure with water_unit_weight).
+/// the ground from the surface points' p_L (surfaceWaterPressure with water_unit_weight) at
+/// the section's ground: a given ground above the envelope takes the soil's weight up to it
+/// from the raster, so the standing water starts there too, not at the envelope.
 SlopeSection sectionFromPoints(const SectionPoints& points, MaterialStrength strength,
                                Real cell_size = 0, const Polyline* ground = nullptr,
                                Real water_unit_weight = 9810);
