@@ -20,8 +20,12 @@ std::string contents(const std::string& path) {
   return text.str();
 }
 
+// A directory of the test's own: ctest runs these tests in parallel processes, and a shared
+// one was removed by one test while another wrote into it ("cannot remove: Directory not
+// empty", seen once in CI).
 std::string csvPath(const std::string& name) {
-  const std::string dir = test::freshDirectory("csv");
+  const std::string dir = test::freshDirectory(
+      std::string("csv_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   std::filesystem::create_directories(dir);
   return dir + "/" + name;
 }
