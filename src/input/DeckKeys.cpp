@@ -303,11 +303,11 @@ ListSchema materialKeys() {
                       "retention curve (the thesis; the suction it makes draws water into the "
                       "crack); air-filled: a crack open to the surface, kept out of the pores as "
                       "for a dry point, and the point drains into it above p_L = 0 while it is "
-                      "open (doc/theory.md, 'Air-filled tension cracks'); known defect: a "
-                      "fixed-skeleton stage on a slid grid body can go unstable with it "
-                      "(doc/verification.md, 'The crack model tested'), and an explicit FLIP "
-                      "stage on a 0.1 m Tri3 levee came apart (doc/verification.md, 'Why the "
-                      "0.1 m run with air-filled cracks comes apart')")
+                      "open; it opens only where air reaches it, in an element on the soil's "
+                      "free surface or beside an open air-filled crack (doc/theory.md, "
+                      "'Air-filled tension cracks'); known defect: a fixed-skeleton stage on a "
+                      "slid grid body can go unstable with it (doc/verification.md, 'The crack "
+                      "model tested')")
           .when("Phase Model", {"unsaturated"})
           .byDefault(std::string("pore space")));
   material.add(KeySpec::sublist("Solid", solidKeys(), "solid skeleton").require());

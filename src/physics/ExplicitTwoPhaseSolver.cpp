@@ -80,6 +80,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   evaluatePointShapes(mesh_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_, &shapes_, {});
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
+  air_path_ = AirPath(table_, mesh_.numElements());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes());
   element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
 }
@@ -90,6 +91,7 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   time_step_.markStale();
   table_ = MaterialTable(materials);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  air_path_ = AirPath(table_, mesh_.numElements());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
   element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
   setReproducibleSums(reproducible_sums_);  // the new scratch compensated as the old
@@ -515,7 +517,12 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
 
 void ExplicitTwoPhaseSolver::updatePointStates() {
   averaging_.rememberPressures(points_);  // ---- Locking mitigation (no-op unless asked)
-  totals_ = argine::updatePointStates(table_, rates_, points_, momentum_.liquid_with_solid);
+  if (air_path_.enabled()) {              // ---- Air-filled cracks open only where air reaches them
+    detectFreeBoundary();
+    air_path_.update(free_boundary_, points_, ranks_ ? ranks_->comm() : MPI_COMM_NULL);
+  }
+  totals_ = argine::updatePointStates(table_, rates_, points_, momentum_.liquid_with_solid,
+                                      air_path_.reachesElement());
   if (reproducible_sums_) {  // the liquid mass of the step, compensated (same terms)
     liquid_mass_pair_ = compensatedSum(points_.mass_liquid);
     totals_.liquid_mass = liquid_mass_pair_.value();

@@ -67,9 +67,11 @@ struct PointStateUpdate {
 }  // namespace
 
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
-                              MaterialPoints& points, bool hold_liquid_pressure) {
+                              MaterialPoints& points, bool hold_liquid_pressure,
+                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e) {
   PointStateUpdate kernel;
-  kernel.v = PointUpdateViews{table.materials(), points, rates, hold_liquid_pressure};
+  kernel.v =
+      PointUpdateViews{table.materials(), points, rates, hold_liquid_pressure, air_reaches_e};
   kernel.count = points.count;
   Real sums[2] = {0, 0};
   const int chunks = (points.count + kLanes - 1) / kLanes;

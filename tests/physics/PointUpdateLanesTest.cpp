@@ -83,7 +83,7 @@ void randomise(MaterialPoints& points, PointRates& rates, unsigned seed) {
 /// The one-point updates in their order (updatePointStates' reference).
 void updateOneByOne(const MaterialTable& table, const PointRates& rates, MaterialPoints& points,
                     bool hold) {
-  const PointUpdateViews v{table.materials(), points, rates, hold};
+  const PointUpdateViews v{table.materials(), points, rates, hold, {}};
   for (int p = 0; p < points.count; ++p) {
     if (points.element(p) < 0) continue;
     closeSeparation(v, p);

@@ -27,8 +27,10 @@ MaterialSpec sand(PhaseModel phase) {
 }
 
 /// One point at isotropic effective stress -1 kPa given the strain increment `dstrain`
-/// (xx, yy; zz = xy = 0), updated by the one-point path; returns the point.
-MaterialPoints updateOnePoint(const MaterialSpec& material, Real dxx, Real dyy, Real pressure) {
+/// (xx, yy; zz = xy = 0), updated by the one-point path; returns the point. `air_reaches`:
+/// the point's element (0) in the air path's map (-1: no map).
+MaterialPoints updateOnePoint(const MaterialSpec& material, Real dxx, Real dyy, Real pressure,
+                              int air_reaches = -1) {
   MaterialPoints points;
   points.allocate(1);
   PointRates rates;
@@ -49,7 +51,12 @@ MaterialPoints updateOnePoint(const MaterialSpec& material, Real dxx, Real dyy, 
   }
   rates.strain_increment_p(0, XX) = dxx;
   rates.strain_increment_p(0, YY) = dyy;
-  const PointUpdateViews v{table.materials(), points, rates, false};
+  Kokkos::View<unsigned char*, MemSpace> air;
+  if (air_reaches >= 0) {
+    air = Kokkos::View<unsigned char*, MemSpace>("air", 1);
+    Kokkos::deep_copy(air, static_cast<unsigned char>(air_reaches));
+  }
+  const PointUpdateViews v{table.materials(), points, rates, false, air};
   closeSeparation(v, 0);
   updatePorosityAndVolume(v, 0);
   updateLiquidPressure(v, 0);
@@ -139,6 +146,25 @@ TEST(SeparationAtApex, AnAirFilledCrackIsKeptOutOfThePoresAndDrawsNoWater) {
   EXPECT_GT(p.saturation(0), pores.saturation(0) + 0.01);
 }
 
+TEST(SeparationAtApex, NoAirFilledCrackOpensWhereNoAirReaches) {
+  // The point of AnAirFilledCrack... in an element the air path does not reach (AirPath.hpp):
+  // its crack stays pore space, the same bits as the pore-space model; where air reaches,
+  // the air-filled crack of the test above.
+  const MaterialSpec air_filled = crackingSand(PhaseModel::Unsaturated, TensionCracks::AirFilled);
+  const MaterialPoints shut = updateOnePoint(air_filled, 1e-2, 0, -5e3, 0);
+  const MaterialPoints pores = updateOnePoint(crackingSand(PhaseModel::Unsaturated), 1e-2, 0, -5e3);
+  EXPECT_EQ(shut.plastic_state(0), kPlasticStateTension);
+  EXPECT_EQ(shut.separation(0), 0.0);
+  EXPECT_EQ(shut.volume(0), pores.volume(0));
+  EXPECT_EQ(shut.saturation(0), pores.saturation(0));
+  EXPECT_EQ(shut.pressure_liquid(0), pores.pressure_liquid(0));
+  const MaterialPoints open = updateOnePoint(air_filled, 1e-2, 0, -5e3, 1);
+  const MaterialPoints no_map = updateOnePoint(air_filled, 1e-2, 0, -5e3);
+  EXPECT_GT(open.separation(0), 9e-3);
+  EXPECT_EQ(open.separation(0), no_map.separation(0));
+  EXPECT_EQ(open.saturation(0), no_map.saturation(0));
+}
+
 TEST(SeparationAtApex, LiquidSqueezedFromACrackedPointFillsItsCrackAtZeroPressure) {
   // Nearly saturated (p_L = -50 Pa, S_L = 0.998), pulled in x (1e-2) and squeezed in y
   // (-3e-3). Hand-computed: lambda = G = 4e5 Pa; the trial sigma_xx = -1e3 + 1.2e6 x 1e-2 +
@@ -169,7 +195,7 @@ TEST(SeparationAtApex, LiquidSqueezedFromACrackedPointFillsItsCrackAtZeroPressur
   rates.allocate(1);
   rates.strain_increment_p(0, XX) = -5e-3;
   rates.strain_increment_p(0, YY) = -5e-3;
-  const PointUpdateViews v{table.materials(), points, rates, false};
+  const PointUpdateViews v{table.materials(), points, rates, false, {}};
   closeSeparation(v, 0);
   updatePorosityAndVolume(v, 0);
   updateLiquidPressure(v, 0);
@@ -190,7 +216,7 @@ TEST(SeparationAtApex, APointThatOpenedClosesItsGapBeforeItCompresses) {
   const MaterialTable table({material});
   PointRates rates;
   rates.allocate(1);
-  const PointUpdateViews v{table.materials(), points, rates, false};
+  const PointUpdateViews v{table.materials(), points, rates, false, {}};
   auto compress = [&] {
     rates.strain_increment_p(0, XX) = -3e-3;
     rates.strain_increment_p(0, YY) = -3e-3;

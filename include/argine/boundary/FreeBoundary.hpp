@@ -65,6 +65,10 @@ class FreeBoundary {
   std::vector<int> boundaryPoints(const MaterialPoints& points) const;
   /// The free side of `element` with local index `side` as a FreeSide (geometry only).
   FreeSide sideOf(int element, int side) const;
+  /// Sides (= nodes) per element of the mesh.
+  int sidesPerElement() const { return per_; }
+  /// The element across local side `side` of `element`, -1 at the mesh edge.
+  int neighbour(int element, int side) const { return neighbours_[element * per_ + side]; }
   /// How many times detect() ran (for tests of when it runs).
   long detections() const { return detections_; }
 

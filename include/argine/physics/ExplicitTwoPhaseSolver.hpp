@@ -26,7 +26,8 @@
 ///                               the donor limit of the outflow at dry points
 ///                               (LiquidOutflowLimit.hpp)
 ///   accountBoundaryFluxes       liquid volume through each hydraulic condition
-///   updatePointStates           steps 5-7 in one pass over the points, per point:
+///   updatePointStates           (with air-filled cracks: where air reaches, AirPath.hpp)
+///                               steps 5-7 in one pass over the points, per point:
 ///     updatePorosityAndVolume   step 6: 4.9 (first: the mass balance needs n V)
 ///     updateLiquidPressure      step 5: mass balance 4.12 (or 4.14), conservative form
 ///     updateEffectiveStress     step 5: sigma' (4.22), Bishop chi = S_L (4.5)
@@ -69,6 +70,7 @@
 #include "argine/core/Types.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/parallel/NodalExchange.hpp"
+#include "argine/physics/AirPath.hpp"
 #include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/IntraElementSeepage.hpp"
@@ -316,6 +318,7 @@ class ExplicitTwoPhaseSolver {
   StageBoundaryConditions boundaries_;
   SideWallFriction side_walls_;  ///< the walls of a quasi-2D channel (stage `side walls`)
   FreeBoundary free_boundary_;
+  AirPath air_path_;  ///< where an air-filled crack may open (materials with such cracks)
   HydraulicConditions hydraulic_;
   BoundaryGradientFields boundary_fields_;
   /// `Hydraulic Loads: at boundary points` (StageSpec::hydraulic_loads_at_points) and its

@@ -24,7 +24,15 @@ struct PointUpdateViews {
   MaterialPoints points;                                     ///< the point fields
   PointRates rates;                                          ///< this step's increments
   bool hold_liquid_pressure = false;  ///< `Liquid Pressure: held`: p_L, rho_L, S_L kept
+  /// 1 where air reaches the element (AirPath.hpp), by element: an air-filled crack opens
+  /// only there. Empty: anywhere (a single point's updates, with no mesh around it).
+  Kokkos::View<const unsigned char*, MemSpace> air_reaches_e;
 };
+
+/// Whether air reaches point p for an air-filled crack (PointUpdateViews::air_reaches_e).
+KOKKOS_INLINE_FUNCTION bool airReaches(const PointUpdateViews& v, int p) {
+  return v.air_reaches_e.extent(0) == 0 || v.air_reaches_e(v.points.element(p)) != 0;
+}
 
 /// Before step 6: a point that opened from its neighbours (separation > 0, separateFrom-
 /// Neighbours) and is now compressed closes that gap first: the step's volumetric strain, up
@@ -177,24 +185,27 @@ KOKKOS_INLINE_FUNCTION Real separationOpening(const SolidConstants& constants,
 /// (separateFromNeighbours):
 ///  - dry: at the apex and at the tension cut-off (grains part, a crack opens);
 ///  - unsaturated: at the apex, a point pulled apart all round (air fills the opening); at
-///    the cut-off only with `Tension Cracks: air-filled` and a point that held suction at the
+///    the cut-off only with `Tension Cracks: air-filled`, a point that held suction at the
 ///    start of the step (`saturation_before` < S_max: the stored S_L, which updateLiquidState
-///    renews after the stress): the crack is then open to the air, and the point's liquid
-///    sees it through pressureOfPointLiquid. With `pore space` (the thesis) the crack stays
-///    pore space of the point on its retention curve: the suction the opening makes draws
-///    water into it (a scarp's cracks drew 0.013 m^3/m into the 0.05 m grid levee, doc/
-///    verification.md). Keeping it out without the crack's own storage broke that run: the
-///    lateral squeeze that comes with a crack compressed the nearly saturated pores (p_L up to
+///    renews after the stress) and air that reaches it (`air_reaches`: the surface or an open
+///    crack next to it, AirPath.hpp): the crack is then open to the air, and the point's
+///    liquid sees it through pressureOfPointLiquid. Without the path a point with occluded
+///    air (S_L = 0.9999, 0.8 m deep) opened cracks no air could reach and the slid 0.1 m
+///    levee cracked through its depth and came apart (doc/verification.md). With `pore space` (the
+///    thesis) the crack stays pore space of the point on its retention curve: the suction the
+///    opening makes draws water into it (a scarp's cracks drew 0.013 m^3/m into the 0.05 m grid
+///    levee, doc/ verification.md). Keeping it out without the crack's own storage broke that run:
+///    the lateral squeeze that comes with a crack compressed the nearly saturated pores (p_L up to
 ///    +75 kPa at the crest in the settle stage, a point at -892 kPa, a non-finite stop);
 ///  - saturated: never; water fills the opening, its dilation is the liquid's business (4.12).
 KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(const PointMaterial& material, int plastic_state,
-                                            Real saturation_before) {
+                                            Real saturation_before, bool air_reaches = true) {
   if (material.phase == PhaseModel::Dry) return isSeparating(plastic_state);
   if (material.phase != PhaseModel::Unsaturated) return false;
   if (plastic_state == kPlasticStateApex) return true;
   return plastic_state == kPlasticStateTension &&
          material.tension_cracks == TensionCracks::AirFilled &&
-         saturation_before < material.retention.saturation_max;
+         saturation_before < material.retention.saturation_max && air_reaches;
 }
 
 /// Step 6 corrected at a separating return (keepsOpeningOut): the opening (separationOpening)
@@ -209,7 +220,9 @@ KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(const PointMaterial& material, int p
 KOKKOS_INLINE_FUNCTION void separateFromNeighbours(const PointUpdateViews& v, int p,
                                                    const PointMaterial& material, int plastic_state,
                                                    Real opening) {
-  if (!(opening > 0) || !keepsOpeningOut(material, plastic_state, v.points.saturation(p))) return;
+  if (!(opening > 0) ||
+      !keepsOpeningOut(material, plastic_state, v.points.saturation(p), airReaches(v, p)))
+    return;
   const Real volumetric = v.rates.strain_increment_p(p, XX) + v.rates.strain_increment_p(p, YY) +
                           v.rates.strain_increment_p(p, ZZ);
   const Real ratio = (1 + volumetric - opening) / (1 + volumetric);  // kept / kinematic
@@ -357,6 +370,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v
 /// one pass; returns the liquid mass and the number of points whose new state is invalid
 /// (pointStateIsValid); the kinetic energies are left 0 (the G2P sums them).
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
-                              MaterialPoints& points, bool hold_liquid_pressure = false);
+                              MaterialPoints& points, bool hold_liquid_pressure = false,
+                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e = {});
 
 }  // namespace argine
