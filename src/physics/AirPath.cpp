@@ -18,8 +18,8 @@ AirPath::AirPath(const MaterialTable& table, int elements) {
     }
   if (!enabled_) return;
   cracked_.assign(elements, 0);
-  reaches_.assign(elements, 0);
   reaches_e_ = Kokkos::View<unsigned char*, MemSpace>("air_reaches_e", elements);
+  reaches_h_ = Kokkos::create_mirror_view(reaches_e_);
 }
 
 void AirPath::update(const FreeBoundary& boundary, const MaterialPoints& points, MPI_Comm comm) {
@@ -35,21 +35,19 @@ void AirPath::update(const FreeBoundary& boundary, const MaterialPoints& points,
   const int elements = static_cast<int>(cracked_.size());
   if (comm != MPI_COMM_NULL)
     MPI_Allreduce(MPI_IN_PLACE, cracked_.data(), elements, MPI_UNSIGNED_CHAR, MPI_BOR, comm);
-  std::fill(reaches_.begin(), reaches_.end(), 0);
+  Kokkos::deep_copy(reaches_h_, 0);
   for (const FreeSide& side : boundary.sides())
-    if (!side.mesh_edge) reaches_[side.element] = 1;
+    if (!side.mesh_edge) reaches_h_(side.element) = 1;
   const int sides = boundary.sidesPerElement();
   cracked_count_ = 0;
   for (int e = 0; e < elements; ++e) {
     if (!cracked_[e]) continue;
     ++cracked_count_;
-    reaches_[e] = 1;
+    reaches_h_(e) = 1;
     for (int s = 0; s < sides; ++s)
-      if (boundary.neighbour(e, s) >= 0) reaches_[boundary.neighbour(e, s)] = 1;
+      if (boundary.neighbour(e, s) >= 0) reaches_h_(boundary.neighbour(e, s)) = 1;
   }
-  const Kokkos::View<const unsigned char*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> host(
-      reaches_.data(), reaches_.size());
-  Kokkos::deep_copy(reaches_e_, host);
+  Kokkos::deep_copy(reaches_e_, reaches_h_);  // no copy where the two are the same memory
 }
 
 }  // namespace argine

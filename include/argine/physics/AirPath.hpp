@@ -51,10 +51,11 @@ class AirPath {
 
  private:
   bool enabled_ = false;
-  std::vector<unsigned char> air_filled_m_;  ///< by material id: air-filled cracks
-  std::vector<unsigned char> cracked_;       ///< by element, scratch
-  std::vector<unsigned char> reaches_;       ///< by element, host side of reaches_e_
-  Kokkos::View<unsigned char*, MemSpace> reaches_e_;
+  std::vector<unsigned char> air_filled_m_;           ///< by material id: air-filled cracks
+  std::vector<unsigned char> cracked_;                ///< by element, scratch
+  Kokkos::View<unsigned char*, MemSpace> reaches_e_;  ///< the map, by element
+  Kokkos::View<unsigned char*, MemSpace>::HostMirror reaches_h_;  ///< its host side (the same
+                                                                  ///< memory on a host space)
   int cracked_count_ = 0;
 };
 

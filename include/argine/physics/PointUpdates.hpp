@@ -191,12 +191,13 @@ KOKKOS_INLINE_FUNCTION Real separationOpening(const SolidConstants& constants,
 ///    crack next to it, AirPath.hpp): the crack is then open to the air, and the point's
 ///    liquid sees it through pressureOfPointLiquid. Without the path a point with occluded
 ///    air (S_L = 0.9999, 0.8 m deep) opened cracks no air could reach and the slid 0.1 m
-///    levee cracked through its depth and came apart (doc/verification.md). With `pore space` (the
-///    thesis) the crack stays pore space of the point on its retention curve: the suction the
-///    opening makes draws water into it (a scarp's cracks drew 0.013 m^3/m into the 0.05 m grid
-///    levee, doc/ verification.md). Keeping it out without the crack's own storage broke that run:
-///    the lateral squeeze that comes with a crack compressed the nearly saturated pores (p_L up to
-///    +75 kPa at the crest in the settle stage, a point at -892 kPa, a non-finite stop);
+///    levee cracked through its depth and came apart (doc/verification.md). With `pore
+///    space` (the thesis) the crack stays pore space of the point on its retention curve: the
+///    suction the opening makes draws water into it (a scarp's cracks drew 0.013 m^3/m into
+///    the 0.05 m grid levee, doc/verification.md). Keeping it out without the crack's own
+///    storage broke that run: the lateral squeeze that comes with a crack compressed the
+///    nearly saturated pores (p_L up to +75 kPa at the crest in the settle stage, a point at
+///    -892 kPa, a non-finite stop);
 ///  - saturated: never; water fills the opening, its dilation is the liquid's business (4.12).
 KOKKOS_INLINE_FUNCTION bool keepsOpeningOut(const PointMaterial& material, int plastic_state,
                                             Real saturation_before, bool air_reaches = true) {
