@@ -44,8 +44,10 @@ void AirPath::update(const FreeBoundary& boundary, const MaterialPoints& points,
     if (!cracked_[e]) continue;
     ++cracked_count_;
     reaches_h_(e) = 1;
-    for (int s = 0; s < sides; ++s)
-      if (boundary.neighbour(e, s) >= 0) reaches_h_(boundary.neighbour(e, s)) = 1;
+    for (int s = 0; s < sides; ++s) {
+      const int across = boundary.neighbour(e, s);
+      if (across >= 0) reaches_h_(across) = 1;
+    }
   }
   Kokkos::deep_copy(reaches_e_, reaches_h_);  // no copy where the two are the same memory
 }
