@@ -273,6 +273,15 @@ ListSchema lockingMitigationKeys() {
                                "apart (+300 / -120 kPa in the levee drawdown, issue P11; "
                                "doc/theory.md); false: off (the thesis)")
                   .byDefault(false));
+  locking.add(KeySpec::choice("Seepage Patch", deckWords(kSeepagePatchWords),
+                              "with Intra-Element Seepage: which points exchange. element: "
+                              "the points of one element, through its centre; nodal: the "
+                              "points that share a node, through the node centres (the node "
+                              "averaging of Volumetric Strain Averaging), so that a point "
+                              "alone in its cell, as a shear band on a grid leaves them, "
+                              "exchanges with its neighbours across the cell edge "
+                              "(doc/theory.md Sec. 3.3.6)")
+                  .byDefault(std::string("element")));
   return locking;
 }
 

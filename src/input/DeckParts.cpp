@@ -377,6 +377,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
       deckValue(kIncrementAveragingWords, locking.word("Liquid Pressure Averaging"));
   spec.head_stabilisation = locking.real("Liquid Head Stabilisation");
   spec.intra_element_seepage = locking.boolean("Intra-Element Seepage");
+  spec.seepage_patch = deckValue(kSeepagePatchWords, locking.word("Seepage Patch"));
   return spec;
 }
 

@@ -93,7 +93,8 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   air_path_ = AirPath(table_, mesh_.numElements());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
-  element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
+  element_seepage_ =
+      IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   setReproducibleSums(reproducible_sums_);  // the new scratch compensated as the old
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
@@ -205,7 +206,8 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   exchange_ = std::make_unique<NodalExchange>(decomposition);
   averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
-  element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
+  element_seepage_ =
+      IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   setReproducibleSums(reproducible_sums_);
   outflow_limit_.distribute(exchange_.get(), decomposition.comm(), mesh_.numNodes());
   keepOwnedPoints(decomposition, points_);

@@ -9,7 +9,13 @@
 
 namespace argine {
 
-IntraElementSeepage::IntraElementSeepage(const MaterialTable& table, int elements, int nodes) {
+static_assert(static_cast<int>(IncrementAveraging::Element) == kAverageElement &&
+                  static_cast<int>(IncrementAveraging::Nodal) == kAverageNodal,
+              "the patch is read as the averaging mode");
+
+IntraElementSeepage::IntraElementSeepage(const MaterialTable& table, int elements, int nodes,
+                                         NodalExchange* exchange)
+    : exchange_(exchange) {
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
     active_ = active_ || (carriesLiquid(material.phase) && material.locking.intra_element_seepage);
@@ -43,11 +49,11 @@ void IntraElementSeepage::apply(const MaterialTable& table, const MaterialPoints
         const Real conductance = pointDarcyConductance(pts.conductivity(p));  // kg/(Pa s)
         const Real weight = starExchangeWeight(conductance, storage, dt);
         if (!(weight > 0)) return;
-        mode_p(p) = kAverageElement;
+        mode_p(p) = static_cast<int>(material.locking.seepage_patch);
         weight_p(p) = weight;
         head_p(p) = piezometricPressure(material, pressure, pts.position(p, 1), gravity);
       });
-  averagePointValues(points, shapes, active, heads_, nullptr);  // element sums: rank-local
+  averagePointValues(points, shapes, active, heads_, exchange_);
   const PointRates rts = rates;
   Kokkos::parallel_for(
       "intra_element_seepage_out", Kokkos::RangePolicy<ExecSpace>(0, count),

@@ -1,10 +1,12 @@
 // The Darcy exchange between the points of one element (physics/IntraElementSeepage.hpp):
 // the implicit star weight by hand, a saturated point's excess pressure shared within its
 // element with the element's liquid mass kept (at its Darcy rate, and without overshoot in a
-// long step), unsaturated points at their Darcy rate, and hydrostatic elements left alone.
+// long step), unsaturated points at their Darcy rate, and hydrostatic elements left alone;
+// the nodal patch: a point alone in its cell exchanges with its neighbours across the edge.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -178,6 +180,105 @@ TEST(IntraElementSeepage, UnsaturatedAtDarcyRateAndHydrostaticLeftAlone) {
     if (element(q) != 0) continue;
     const Real p = hostCopy(scene.points.pressure_liquid)(q);
     EXPECT_NEAR(change[q], dt * g * (-10000.0 - p), 2e-3 * dt * g * 10000.0);
+  }
+}
+
+/// Three 0.2 m quad4 cells in a row, the levee's soil; cells 0 and 1 seeded with 2 x 2
+/// points, then the last point of cell 1 moved into cell 2 at the same local position, so
+/// that it is alone in its cell and shares the nodes of the edge x = 0.4 m with cell 1's
+/// three points (as a shear band on a grid leaves single points in cells). `patch` is the
+/// material's Seepage Patch.
+struct LonePointInACell {
+  static constexpr Real kCell = 0.2;
+  Mesh mesh = test::rectangleMesh(3, 1, 3 * kCell, kCell, ElementType::Quad4);
+  MaterialPoints points = test::seedUniform(mesh, 0, [](int e) { return e < 2; });
+  MaterialTable table;
+  PointShapes shapes;
+  PointRates rates;
+  ActiveNodes active{mesh.numNodes()};
+  int lone = -1;
+  explicit LonePointInACell(IncrementAveraging patch) {
+    MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 5e7, 0.3, kPorosity,
+                                              kConductivity, kBulk);
+    soil.retention.model = RetentionModel::Linear;
+    soil.retention.linear_slope = kSlope;
+    soil.locking.intra_element_seepage = true;
+    soil.locking.seepage_patch = patch;
+    table = MaterialTable({soil});
+    lone = points.count - 1;
+    auto element = hostCopy(points.element);
+    auto position = hostCopy(points.position);
+    EXPECT_EQ(element(lone), 1);
+    element(lone) = 2;
+    position(lone, 0) += kCell;
+    Kokkos::deep_copy(points.element, element);
+    Kokkos::deep_copy(points.position, position);
+    evaluatePointShapes(mesh, points, shapes);
+    rates.allocate(points.count);
+    active.rebuild(mesh, points);
+  }
+  /// Bilinear N of the node at (X, Y) at (x, y) on these cells (tensor-product hats).
+  static Real hat(Real X, Real Y, Real x, Real y) {
+    return std::max(0.0, 1 - std::fabs(x - X) / kCell) *
+           std::max(0.0, 1 - std::fabs(y - Y) / kCell);
+  }
+};
+
+// With the element patch the lone point exchanges with nobody, whatever its excess; with the
+// nodal patch it is drawn to the weighted centres of its nodes by hand (phi_i = sum N w phi /
+// sum N w, target sum N phi_i, dM = w (target - phi)), it loses liquid to its neighbours
+// across the edge, and the body's liquid mass is kept.
+TEST(IntraElementSeepage, NodalPatchReachesAPointAloneInItsCell) {
+  const Real dt = 3e-5, g = kConductivity / 9.81;
+  for (const IncrementAveraging patch : {IncrementAveraging::Element, IncrementAveraging::Nodal}) {
+    LonePointInACell scene(patch);
+    const PointMaterial& material = scene.table.host(0);
+    test::setLiquidStates(scene.points, material, kPorosity,
+                          [&](int q, Real, Real) { return q == scene.lone ? 300e3 : -3000.0; });
+    Kokkos::deep_copy(scene.rates.content_flux_divergence_increment_p, 0.0);
+    IntraElementSeepage seepage(scene.table, scene.mesh.numElements(), scene.mesh.numNodes());
+    seepage.apply(scene.table, scene.points, scene.shapes, scene.active, scene.rates, dt, 0.0);
+    const auto flux = hostCopy(scene.rates.content_flux_divergence_increment_p);
+    const auto volume = hostCopy(scene.points.volume);
+    const auto pressure = hostCopy(scene.points.pressure_liquid);
+    const auto x = hostCopy(scene.points.position);
+    const int n = scene.points.count;
+    std::vector<Real> change(n), weight(n);
+    Real total = 0;
+    for (int q = 0; q < n; ++q) {
+      change[q] = -volume(q) * flux(q);
+      total += change[q];
+      const Real p = pressure(q);
+      const Real storage =
+          kPorosity * volume(q) *
+          liquidContentSlope(
+              hostCopy(scene.points.density_liquid)(q), hostCopy(scene.points.saturation)(q),
+              saturationSuctionDerivative(material.retention, suctionOfPressure(p)), kBulk);
+      weight[q] = starExchangeWeight(g, storage, dt);
+    }
+    const Real scale = weight[scene.lone] * 300e3;
+    EXPECT_NEAR(total, 0.0, 1e-12 * scale);  // the liquid mass of the body kept
+    if (patch == IncrementAveraging::Element) {
+      EXPECT_EQ(change[scene.lone], 0.0);  // alone in its element: no exchange
+      continue;
+    }
+    const auto X = hostCopy(scene.mesh.coordinates);
+    for (int q = 0; q < n; ++q) {
+      Real target = 0;
+      for (int i = 0; i < scene.mesh.numNodes(); ++i) {
+        const Real N_q = LonePointInACell::hat(X(i, 0), X(i, 1), x(q, 0), x(q, 1));
+        if (N_q == 0) continue;
+        Real sum_w = 0, sum_wphi = 0;
+        for (int r = 0; r < n; ++r) {
+          const Real N_r = LonePointInACell::hat(X(i, 0), X(i, 1), x(r, 0), x(r, 1));
+          sum_w += N_r * weight[r];
+          sum_wphi += N_r * weight[r] * pressure(r);
+        }
+        target += N_q * sum_wphi / sum_w;
+      }
+      EXPECT_NEAR(change[q], weight[q] * (target - pressure(q)), 1e-10 * scale) << "point " << q;
+    }
+    EXPECT_LT(change[scene.lone], -0.1 * scale);  // it drains into its neighbours
   }
 }
 

@@ -49,6 +49,11 @@ inline constexpr DeckWord<IncrementAveraging> kIncrementAveragingWords[] = {
     {"nodal", IncrementAveraging::Nodal},
 };
 
+inline constexpr DeckWord<IncrementAveraging> kSeepagePatchWords[] = {
+    {"element", IncrementAveraging::Element},
+    {"nodal", IncrementAveraging::Nodal},
+};
+
 inline constexpr DeckWord<RetentionModel> kRetentionModelWords[] = {
     {"linear", RetentionModel::Linear},
     {"van Genuchten", RetentionModel::VanGenuchten},

@@ -51,6 +51,8 @@ struct LockingMitigationSpec {
   Real head_stabilisation = 0;
   /// Darcy exchange between the points of one element (physics/IntraElementSeepage.hpp)
   bool intra_element_seepage = false;
+  /// whose points exchange: one element's (Element) or those sharing a node (Nodal)
+  IncrementAveraging seepage_patch = IncrementAveraging::Element;
 };
 
 struct LiquidSpec {
