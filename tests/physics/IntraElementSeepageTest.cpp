@@ -27,6 +27,15 @@ using test::hostCopy;
 
 constexpr Real kPorosity = 0.4, kConductivity = 3.92e-4, kBulk = 8e7, kSlope = 4e-7;
 
+/// dM_L/dp_L (kg/Pa) of point q at its pressure, by hand: n V rho_L (S_L/K_L - dS_L/ds).
+Real pointStorage(const MaterialPoints& points, const PointMaterial& material, int q) {
+  const Real p = hostCopy(points.pressure_liquid)(q);
+  const Real ds_ds = saturationSuctionDerivative(material.retention, suctionOfPressure(p));
+  return kPorosity * hostCopy(points.volume)(q) *
+         liquidContentSlope(hostCopy(points.density_liquid)(q), hostCopy(points.saturation)(q),
+                            ds_ds, kBulk);
+}
+
 TEST(IntraElementSeepage, StarWeightByHand) {
   // dt g = 0.5 x 2 = 1 kg/Pa, C = 3 kg/Pa: w = 1 x 3 / (1 + 3) = 0.75
   EXPECT_DOUBLE_EQ(starExchangeWeight(2.0, 3.0, 0.5), 0.75);
@@ -76,14 +85,7 @@ struct TwoTriangles {
     for (int q = 0; q < points.count; ++q) change[q] = -volume(q) * flux(q);
     return change;
   }
-  /// dM_L/dp_L (kg/Pa) of point q at its pressure.
-  Real storage(int q) const {
-    const Real p = hostCopy(points.pressure_liquid)(q);
-    const Real ds_ds = saturationSuctionDerivative(material().retention, suctionOfPressure(p));
-    return kPorosity * hostCopy(points.volume)(q) *
-           liquidContentSlope(hostCopy(points.density_liquid)(q), hostCopy(points.saturation)(q),
-                              ds_ds, kBulk);
-  }
+  Real storage(int q) const { return pointStorage(points, material(), q); }
 };
 
 // Element 0 as in the levee slide: one saturated point at +300 kPa beside two unsaturated
@@ -248,13 +250,7 @@ TEST(IntraElementSeepage, NodalPatchReachesAPointAloneInItsCell) {
     for (int q = 0; q < n; ++q) {
       change[q] = -volume(q) * flux(q);
       total += change[q];
-      const Real p = pressure(q);
-      const Real storage =
-          kPorosity * volume(q) *
-          liquidContentSlope(
-              hostCopy(scene.points.density_liquid)(q), hostCopy(scene.points.saturation)(q),
-              saturationSuctionDerivative(material.retention, suctionOfPressure(p)), kBulk);
-      weight[q] = starExchangeWeight(g, storage, dt);
+      weight[q] = starExchangeWeight(g, pointStorage(scene.points, material, q), dt);
     }
     const Real scale = weight[scene.lone] * 300e3;
     EXPECT_NEAR(total, 0.0, 1e-12 * scale);  // the liquid mass of the body kept
