@@ -49,9 +49,15 @@ ProgressReporter ProgressReporter::forStandardOutput(const ProgressOptions& opti
 }
 
 void ProgressReporter::beginStage(const std::string& name, Real start_time, Real duration) {
+  beginStage(name, start_time, duration, start_time);
+}
+
+void ProgressReporter::beginStage(const std::string& name, Real start_time, Real duration,
+                                  Real resume_time) {
   stage_ = name;
   start_time_ = start_time;
   duration_ = duration;
+  resume_time_ = resume_time;
   point_updates_ = 0;
   drawn_length_ = 0;
   if (options_.quiet) return;
@@ -78,8 +84,11 @@ std::string ProgressReporter::line(long long step, Real time, Real dt, double no
   const Real elapsed_sim = time - start_time_;
   const double fraction = duration_ > 0.0 ? std::clamp(elapsed_sim / duration_, 0.0, 1.0) : 1.0;
   const double wall = now - wall_start_;
-  // Remaining wall time if the rest of the stage runs at the rate so far.
-  const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : -1.0;
+  // Remaining wall time if the rest of the stage runs at this run's rate so far (a resumed
+  // run's wall clock starts at the checkpoint, not at the stage's start).
+  const Real done_here = time - resume_time_;
+  const Real remaining = start_time_ + duration_ - time;
+  const double eta = done_here > 0.0 ? wall * std::max<Real>(remaining, 0.0) / done_here : -1.0;
   const double rate = wall > 0.0 ? static_cast<double>(point_updates_) / wall : 0.0;
   return stage_ + ": t " + formatted("%.4g", elapsed_sim) + " s / " + formatted("%.4g", duration_) +
          " s (" + formatted("%.1f", 100.0 * fraction) + "%)  step " + std::to_string(step) +

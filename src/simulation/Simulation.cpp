@@ -209,7 +209,7 @@ void Simulation::runStage(const StageSpec& stage) {
   // Times within this tolerance of a target count as reaching it (round-off of sums of dt).
   const Real tolerance = 1e-9 * std::max<Real>(stage.duration, 1e-30);
 
-  progress_->beginStage(stage.name, start, stage.duration);
+  progress_->beginStage(stage.name, start, stage.duration, solver_->time());
   Real dt = 0;
   bool first_step = true;
   while (solver_->time() < end - tolerance) {

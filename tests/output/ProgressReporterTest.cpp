@@ -63,6 +63,17 @@ TEST(ProgressReporter, EtaFollowsTheSimulatedRateSoFar) {
   EXPECT_NE(run.reporter.line(0, 0.0, 0.01, run.now).find("ETA --"), std::string::npos);
 }
 
+TEST(ProgressReporter, EtaOfAResumedStageFollowsTheRateSinceTheResume) {
+  FakeRun run(false, ProgressOptions{false, 1.0, 0.25});
+  // A 60 s stage resumed from a checkpoint at 30 s: 1 min of wall for 3 s more (33 s, 55 %)
+  // leaves 27 s at 3 s a minute: 9 min (counting the 30 s before the resume: 49 s).
+  run.reporter.beginStage("collapse", 0.0, 60.0, 30.0);
+  run.now += 60.0;
+  run.reporter.update(3300, 33.0, 0.01, 0);
+  EXPECT_NE(run.out.str().find("(55.0%)"), std::string::npos) << run.out.str();
+  EXPECT_NE(run.out.str().find("ETA 9m00s"), std::string::npos) << run.out.str();
+}
+
 TEST(ProgressReporter, StageEndPrintsTheFinalLineWithTheWallTimeTaken) {
   FakeRun run(false);
   run.reporter.beginStage("initialise", 0.0, 10.0);

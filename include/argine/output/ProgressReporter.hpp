@@ -37,8 +37,11 @@ class ProgressReporter {
   /// Reports to standard output: terminal mode when it is a tty (isatty), steady clock.
   static ProgressReporter forStandardOutput(const ProgressOptions& options = {});
 
-  /// Starts a stage running from simulated time `start_time` for `duration` seconds.
+  /// Starts a stage running from simulated time `start_time` for `duration` seconds, its
+  /// steps from `resume_time` on (later than `start_time` when a run resumes from a
+  /// checkpoint in the middle of the stage; the ETA is the rate since then).
   void beginStage(const std::string& name, Real start_time, Real duration);
+  void beginStage(const std::string& name, Real start_time, Real duration, Real resume_time);
 
   /// Records one step that updated `num_points` points and ended at simulated time `time`;
   /// prints when a report is due.
@@ -61,6 +64,7 @@ class ProgressReporter {
   std::string stage_;             ///< current stage name
   Real start_time_ = 0.0;         ///< simulated time at stage start (s)
   Real duration_ = 0.0;           ///< stage duration (s)
+  Real resume_time_ = 0.0;        ///< simulated time this run's steps of the stage began (s)
   double wall_start_ = 0.0;       ///< wall time at stage start (s)
   double next_report_ = 0.0;      ///< wall time of the next report (s)
   long long point_updates_ = 0;   ///< point updates since stage start
