@@ -150,6 +150,8 @@ RunSummary Simulation::run() {
 
   total_points_ = totalPoints();
   const double wall_start = wallSeconds();
+  // A resumed run carries the checkpoint's counts; its rate is of the updates it made itself.
+  const double updates_at_start = static_cast<double>(summary_.point_updates);
   last_checkpoint_wall_ = wall_start;
   for (stage_index_ = resume_ ? static_cast<std::size_t>(resume_->stage_index) : 0;
        stage_index_ < deck_.stages.size(); ++stage_index_) {
@@ -162,8 +164,10 @@ RunSummary Simulation::run() {
   const long long total_points = totalPoints();  // collective: before the rank-0 report
 
   if (reports_) {  // (P10) also with --quiet: quiet silences progress, not results
-    const double rate =
-        summary_.wall_seconds > 0 ? summary_.point_updates / summary_.wall_seconds : 0;
+    const double rate = summary_.wall_seconds > 0
+                            ? (static_cast<double>(summary_.point_updates) - updates_at_start) /
+                                  summary_.wall_seconds
+                            : 0;
     std::printf(
         "argine: %lld steps, %d points, %.3g s simulated in %.2f s wall: %.3g point-updates/s\n",
         summary_.steps, static_cast<int>(total_points), summary_.end_time, summary_.wall_seconds,
