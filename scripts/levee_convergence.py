@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Mesh convergence of a levee scene's run-out (issue P11 item 3).
 
-  levee_convergence.py [--times T ...] [--start S] [--figure PATH] H:DIR:NAME[:SERIES] ...
+  levee_convergence.py [--times T ...] [--start S] [--figure PATH] [--wall H=SECONDS ...]
+                       H:DIR:NAME[:SERIES] ...
 
 Each H:DIR:NAME is one resolution: element size H (m), the results folder DIR and the deck's
 Output Name NAME (DIR/NAME_points.e, DIR/NAME.log from scripts/convergence.sh for the wall
@@ -110,7 +111,17 @@ def main():
     parser.add_argument("--start", type=float, default=1.0,
                         help="simulation time at which the event starts (s)")
     parser.add_argument("--figure", help="accuracy-against-wall-time chart (PNG)")
+    parser.add_argument("--wall", action="append", default=[], metavar="H=SECONDS",
+                        help="wall time of the run of size H where its log does not hold it "
+                        "(a run resumed from a checkpoint: the sum of its parts); repeatable")
     args = parser.parse_args()
+    wall_given = {}
+    for item in args.wall:
+        h, _, seconds = item.partition("=")
+        try:
+            wall_given[float(h)] = float(seconds)
+        except ValueError:
+            sys.exit(f"--wall {item}: expected H=SECONDS, e.g. 0.025=9000")
     runs = []
     for spec in args.runs:
         h, directory, name, *series = spec.split(":")
@@ -127,7 +138,8 @@ def main():
         probes = probe_displacements(directory, name, [args.start + t for t in rows])
         for t in rows:
             rows[t].update(probes.get(args.start + t, {}))
-        runs.append({"h": float(h), "points": len(x0), "wall": wall_time(directory, name),
+        wall = wall_given.get(float(h), wall_time(directory, name))
+        runs.append({"h": float(h), "points": len(x0), "wall": wall,
                      "rows": rows, "series": series[0] if series else ""})
     groups = {}
     for r in runs:
