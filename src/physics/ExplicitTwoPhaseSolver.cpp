@@ -135,7 +135,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   // The atmosphere's rule needs liquid to act on, and a held p_L takes no flux.
   if (!carries_liquid_ || stage.hold_liquid_pressure) hydraulic_.dropAtmosphere();
   if (hydraulic_.atmosphere()) hydraulic_.setOtherLiquidRules(otherLiquidRules());
-  boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 1, 0.0);
+  boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 2, 0.0);
   free_boundary_stale_ = true;
   hydraulic_plan_current_ = false;
 
@@ -312,6 +312,13 @@ void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   else
     free_boundary_.detect(points_);
   free_boundary_stale_ = false;
+  // The nodes of its sides, for the flux accounting's split into boundary and inside.
+  if (static_cast<int>(free_side_nodes_.extent(0)) != mesh_.numNodes())
+    free_side_nodes_ = Kokkos::View<unsigned char*, MemSpace>("free_side_nodes", mesh_.numNodes());
+  auto flag = Kokkos::create_mirror_view(free_side_nodes_);
+  Kokkos::deep_copy(flag, 0);
+  for (const int node : free_boundary_.nodes()) flag(node) = 1;
+  Kokkos::deep_copy(free_side_nodes_, flag);
   hydraulic_plan_current_ = false;
 }
 
@@ -422,10 +429,11 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   // end-of-step reduction (relocatePoints).
   if (ranks_) nodes_owned_.assignMasked(nodes_in_use_, ranks_->nodeOwnedView());
   const std::vector<Real> masses = boundaryFluxMasses(
-      hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, boundary_fields_,
-      grid_, dt, ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>(),
+      hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, free_side_nodes_,
+      boundary_fields_, grid_, dt,
+      ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>(),
       reproducible_sums_ ? &flux_mass_sums_ : nullptr);  // merged over the ranks at the step's end
-  for (int c = 0; c <= conditions; ++c)
+  for (int c = 0; c <= conditions + 1; ++c)
     boundary_flux_volumes_[c] = masses[c] / reference_liquid_density_;
 }
 

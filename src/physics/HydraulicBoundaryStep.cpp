@@ -257,11 +257,12 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
+                                     Kokkos::View<const unsigned char*, MemSpace> free_side,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned,
                                      std::vector<CompensatedReal>* compensation) {
-  std::vector<Real> masses(conditions + 1, 0.0);
+  std::vector<Real> masses(conditions + 2, 0.0);
   const auto weight_i = fields.flux_weight_i;
   const auto vl_i = grid.velocity_liquid_i;
   const auto vs_i = grid.velocity_solid_i;
@@ -270,18 +271,26 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
     for (int d = 0; d < kDim; ++d) sum -= dt * (vl_i(i, d) - vs_i(i, d)) * weight_i(i, d);
     return sum;
   };
+  const bool sided = free_side.extent(0) > 0;
+  auto inside = KOKKOS_LAMBDA(const int i) {
+    return !sided || free_side(i) == 0;
+  };
   const auto owned = ownership.node;
   const auto owner = ownership.owner;
   const bool masked = rank_owned.extent(0) > 0;
   const auto nodes = active.nodes();
   if (compensation) {  // reproducible sums: the same terms, binned, in one order (host)
     std::vector<CompensatedReal>& sums = *compensation;
-    sums.assign(conditions + 1, CompensatedReal{});
+    sums.assign(conditions + 2, CompensatedReal{});
     for (int j = 0; j < ownership.count(); ++j)
       if (owner(j) >= 0 && owner(j) < conditions && (!masked || rank_owned(owned(j))))
         sums[owner(j)].add(inflow(owned(j)));
-    for (int j = 0; j < active.count(); ++j) sums[conditions].add(inflow(nodes(j)));
-    for (int c = 0; c <= conditions; ++c) masses[c] = sums[c].value();
+    for (int j = 0; j < active.count(); ++j) {
+      const Real in = inflow(nodes(j));
+      sums[conditions].add(in);
+      if (inside(nodes(j))) sums[conditions + 1].add(in);
+    }
+    for (int c = 0; c < conditions + 2; ++c) masses[c] = sums[c].value();
     return masses;
   }
   for (int c = 0; c < conditions; ++c) {
@@ -294,11 +303,17 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
         sum);
     masses[c] = sum;
   }
-  Real total = 0;
+  Real total = 0, interior = 0;
   Kokkos::parallel_reduce(
       "boundary_flux_total", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
-      KOKKOS_LAMBDA(const int j, Real& s) { s += inflow(nodes(j)); }, total);
+      KOKKOS_LAMBDA(const int j, Real& s, Real& t) {
+        const Real in = inflow(nodes(j));
+        s += in;
+        if (inside(nodes(j))) t += in;
+      },
+      total, interior);
   masses[conditions] = total;
+  masses[conditions + 1] = interior;
   return masses;
 }
 

@@ -103,6 +103,7 @@ std::uintmax_t writeCheckpoint(const std::string& path, std::uint64_t deck_hash,
   out.putVector(s.flux_last_step);
   out.putVector(s.flux_cumulative);
   out.put<Real>(s.flux_all_nodes_cumulative);
+  out.put<Real>(s.flux_interior_nodes_cumulative);
   out.put<std::uint64_t>(s.stage_log.size());
   for (const auto& line : s.stage_log) out.putString(line);
   putSolver(out, s.solver);
@@ -149,6 +150,7 @@ void readCheckpoint(const std::string& path, std::uint64_t deck_hash, Checkpoint
   s.flux_last_step = in.getVector<Real>();
   s.flux_cumulative = in.getVector<Real>();
   s.flux_all_nodes_cumulative = in.get<Real>();
+  s.flux_interior_nodes_cumulative = in.get<Real>();
   const auto lines = in.get<std::uint64_t>();
   s.stage_log.clear();
   for (std::uint64_t k = 0; k < lines; ++k) s.stage_log.push_back(in.getString());

@@ -498,7 +498,8 @@ void Simulation::openBoundaryFluxLog() {
   initial_liquid_mass_ = 0;
   for (int p = 0; p < all.count; ++p) initial_liquid_mass_ += mass(p);
   if (!writes()) return;
-  std::vector<std::string> columns{"time", "storage_change", "net_inflow_all_nodes"};
+  std::vector<std::string> columns{"time", "storage_change", "net_inflow_all_nodes",
+                                   "net_inflow_interior_nodes"};
   for (const auto& name : flux_names_) {
     columns.push_back(name + "_step");
     columns.push_back(name + "_cumulative");
@@ -529,6 +530,7 @@ void Simulation::accumulateBoundaryFluxes() {
   }
   // (all nodes: also in a stage whose only rule is the atmosphere's, which passes liquid)
   flux_all_nodes_cumulative_ += volumes[conditions.size()];
+  flux_interior_nodes_cumulative_ += volumes[conditions.size() + 1];
 }
 
 // (P10) The implicit path's per-condition columns: the volume through each condition in its
@@ -559,7 +561,7 @@ void Simulation::writeBoundaryFluxes() {
   const Real mass = liquidMassNow();
   std::vector<Real> row{solver_->time(),
                         (mass - initial_liquid_mass_) / solver_->referenceLiquidDensity(),
-                        flux_all_nodes_cumulative_};
+                        flux_all_nodes_cumulative_, flux_interior_nodes_cumulative_};
   for (std::size_t k = 0; k < flux_names_.size(); ++k) {
     row.push_back(flux_last_step_[k]);
     row.push_back(flux_cumulative_[k]);

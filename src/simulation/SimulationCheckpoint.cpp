@@ -118,6 +118,7 @@ void Simulation::restoreFromCheckpoint() {
   flux_last_step_ = s.flux_last_step;
   flux_cumulative_ = s.flux_cumulative;
   flux_all_nodes_cumulative_ = s.flux_all_nodes_cumulative;
+  flux_interior_nodes_cumulative_ = s.flux_interior_nodes_cumulative;
   stage_log_ = s.stage_log;
   stage_start_ = s.stage_start;
   next_output_ = s.next_output;
@@ -201,6 +202,7 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
   s.flux_last_step = flux_last_step_;
   s.flux_cumulative = flux_cumulative_;
   s.flux_all_nodes_cumulative = flux_all_nodes_cumulative_;
+  s.flux_interior_nodes_cumulative = flux_interior_nodes_cumulative_;
   s.stage_log = stage_log_;
   s.solver = solver_->resumeState();
   s.solver.stage_started = mid_stage;

@@ -134,7 +134,7 @@ TEST(HydraulicMovingSurface, RainOnADeformingSlopeEntersAsQTimesTheHorizontalPro
   solver.beginStage(stage);
   const Real rho = solver.referenceLiquidDensity();
   const Real initial = liquidMass(points);
-  Real reported = 0, all_nodes = 0, expected = 0, previous = 0;
+  Real reported = 0, all_nodes = 0, interior = 0, expected = 0, previous = 0;
   Real min_projection = 1e30, max_projection = 0;
   std::vector<int> first_sides;
   bool surface_moved = false;
@@ -153,6 +153,7 @@ TEST(HydraulicMovingSurface, RainOnADeformingSlopeEntersAsQTimesTheHorizontalPro
     expected += dt * q * projection;
     reported += solver.boundaryFluxVolumes()[0];
     all_nodes += solver.boundaryFluxVolumes()[1];
+    interior += solver.boundaryFluxVolumes()[2];
     const auto applied = hostCopy(h.corrections().applied);
     for (int j = 0; j < h.corrections().count(); ++j) EXPECT_EQ(applied(j), 1);
     ++steps;
@@ -160,14 +161,19 @@ TEST(HydraulicMovingSurface, RainOnADeformingSlopeEntersAsQTimesTheHorizontalPro
   const Real storage = (liquidMass(points) - initial) / rho;
   std::printf(
       "[ rain slope ] %d steps, %ld detections, surface moved: %s, projection %.6g..%.6g m\n"
-      "  storage %.12g, reported %.12g, all nodes %.12g, expected q x projection %.12g "
-      "m^3/m (rel. diff %.3g)\n",
+      "  storage %.12g, reported %.12g, all nodes %.12g, inside %.12g, expected q x projection "
+      "%.12g m^3/m (rel. diff %.3g)\n",
       steps, solver.freeBoundary().detections(), surface_moved ? "yes" : "no", min_projection,
-      max_projection, storage, reported, all_nodes, expected, reported / expected - 1);
+      max_projection, storage, reported, all_nodes, interior, expected, reported / expected - 1);
   EXPECT_TRUE(surface_moved);
   EXPECT_NEAR(all_nodes, storage, 1e-9 * std::fabs(storage));  // the accounting identity
   EXPECT_NEAR(expected, 3e-4, 1e-12);                 // monotone surface: the projection stays 3 m
   EXPECT_NEAR(reported, expected, 1e-12 * expected);  // q x current projection, exactly
+  // What the rain brings and the points do not keep is lost at nodes no condition owns: a
+  // large part of it at the nodes inside the body, whose cells the deforming points no longer
+  // fill evenly (G_i != 0 there; doc/theory.md Sec. 5.5, "Limit: a deforming body"). With
+  // full cells that part is zero to round-off (HydraulicStep.RainIntoADryColumn...).
+  EXPECT_LT(interior, -0.1 * (reported - storage));
 }
 
 TEST(HydraulicMovingSurface, SeepageFaceOfADeformingSlopeOnlyDrains) {

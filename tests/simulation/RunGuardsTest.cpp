@@ -163,16 +163,18 @@ TEST(RunGuards, LiquidBookkeepingRunsThroughAnImplicitStage) {
   simulation.run();
   for (const auto& line : simulation.stageLog())
     EXPECT_FALSE(contains(line, "mass balance")) << line;  // the guard's baseline is right
-  // <name>_boundary_flux.csv: time, storage_change, net_inflow_all_nodes, base_step,
-  // base_cumulative
+  // <name>_boundary_flux.csv: time, storage_change, net_inflow_all_nodes,
+  // net_inflow_interior_nodes, base_step, base_cumulative
   std::ifstream csv(options.output_directory + "/wetted_boundary_flux.csv");
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "time,storage_change,net_inflow_all_nodes,base_step,base_cumulative");
-  std::vector<std::array<Real, 5>> rows;
+  EXPECT_EQ(line,
+            "time,storage_change,net_inflow_all_nodes,net_inflow_interior_nodes,base_step,"
+            "base_cumulative");
+  std::vector<std::array<Real, 6>> rows;
   while (std::getline(csv, line)) {
     std::stringstream cells(line);
-    std::array<Real, 5> row{};
+    std::array<Real, 6> row{};
     std::string cell;
     for (Real& value : row) {
       std::getline(cells, cell, ',');
@@ -184,7 +186,11 @@ TEST(RunGuards, LiquidBookkeepingRunsThroughAnImplicitStage) {
   Real largest = 0;
   for (const auto& row : rows) largest = std::max(largest, std::fabs(row[2]));
   EXPECT_GT(largest, 5e-4);  // m3/m (7.8e-4 measured): the implicit inflow is counted
-  for (const auto& row : rows) EXPECT_NEAR(row[1], row[2], 1e-8 * largest) << "t = " << row[0];
+  for (const auto& row : rows) {
+    EXPECT_NEAR(row[1], row[2], 1e-8 * largest) << "t = " << row[0];
+    // a column of full elements that does not deform makes no liquid inside
+    EXPECT_NEAR(row[3], 0.0, 1e-9 * largest) << "t = " << row[0];
+  }
   // (P10) The per-condition columns are filled on the implicit path too: there all the
   // water enters through `base`, so between the wetting stage's outputs its cumulative
   // volume grows as the net inflow does, and each output reports the last implicit step's
@@ -193,8 +199,8 @@ TEST(RunGuards, LiquidBookkeepingRunsThroughAnImplicitStage) {
   for (std::size_t r = 1; r < rows.size(); ++r)
     if (rows[r][0] > 0.0101 && rows[r][0] < 200.0101) {
       ++implicit_rows;
-      EXPECT_GT(rows[r][3], 0.0) << "t = " << rows[r][0];
-      EXPECT_NEAR(rows[r][4] - rows[r - 1][4], rows[r][2] - rows[r - 1][2], 1e-9 * largest)
+      EXPECT_GT(rows[r][4], 0.0) << "t = " << rows[r][0];
+      EXPECT_NEAR(rows[r][5] - rows[r - 1][5], rows[r][2] - rows[r - 1][2], 1e-9 * largest)
           << "t = " << rows[r][0];
     }
   EXPECT_EQ(implicit_rows, 4);  // 50, 100, 150, 200 s after the first stage

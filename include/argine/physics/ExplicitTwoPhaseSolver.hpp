@@ -173,7 +173,8 @@ class ExplicitTwoPhaseSolver {
   const HydraulicConditions& hydraulicConditions() const { return hydraulic_; }
   /// Liquid volume (m^3 per m thickness, mass / reference rho_L) that ENTERED the soil in
   /// the last step through each hydraulic condition, in hydraulicConditions() order; the
-  /// entry after them is the net inflow through all nodes (= the storage change).
+  /// entry after them is the net inflow through all nodes (= the storage change), the last
+  /// the part of it at the nodes on no side of the free boundary (made inside the body).
   const std::vector<Real>& boundaryFluxVolumes() const { return boundary_flux_volumes_; }
   /// rho_L converting liquid masses to volumes: that of the first liquid-carrying material.
   Real referenceLiquidDensity() const { return reference_liquid_density_; }
@@ -310,7 +311,7 @@ class ExplicitTwoPhaseSolver {
   // end of the step (sumCompensatedOverRanks).
   CompensatedKinetic kinetic_pairs_;
   CompensatedReal liquid_mass_pair_;
-  std::vector<CompensatedReal> flux_mass_sums_;  ///< per hydraulic condition, then the total
+  std::vector<CompensatedReal> flux_mass_sums_;  ///< per condition, all nodes, inside the body
   std::vector<CompensatedReal> totals_sums_;     ///< the sums merged at the end of a step
   ActiveNodes nodes_in_use_;        ///< nodes whose grid fields hold the current/last step
   ActiveNodes nodes_next_;          ///< nodes of the points' current elements (next step)
@@ -341,6 +342,7 @@ class ExplicitTwoPhaseSolver {
   bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
   Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
+  Kokkos::View<unsigned char*, MemSpace> free_side_nodes_;  ///< 1 on the free boundary's sides
   Real reference_liquid_density_ = 1000;
   bool carries_liquid_ = false;    ///< some material carries liquid
   VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)

@@ -10,7 +10,8 @@
 ///   after steps 1-2       correctHydraulicAccelerations   predictor-corrector 4.53-4.59
 ///   after step 4 (remap)  correctHydraulicVelocities      the same correction re-imposed on
 ///                                                  the remapped nodal velocities
-///   after step 4          boundaryFluxMasses       liquid mass through each condition
+///   after step 4          boundaryFluxMasses       liquid mass through each condition, all
+///                                                  nodes and the nodes inside the body
 ///
 /// Flux accounting. The point mass balance (PointUpdates, LiquidState) changes a point's
 /// liquid mass by -dt V_p div(c w) (complete form, c = rho_L n S_L from the nodes, the
@@ -115,13 +116,18 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
 
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
-/// is the same sum over ALL active nodes (= the change of the points' liquid mass).
+/// is the same sum over ALL active nodes (= the change of the points' liquid mass); entry
+/// [conditions + 1] the sum over the active nodes on no side of the free boundary
+/// (`free_side`: 1 at the nodes of its sides; empty: none), where G_i would vanish if the
+/// points filled their cells evenly: the liquid the point mass balance makes inside the
+/// body (doc/theory.md Sec. 5.5, "Flux accounting").
 /// `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the condition sums then
 /// count only those (each node on one rank), as `active` does for the total. Empty: all.
 /// With `compensation` (reproducible sums) each entry is a reproducible sum, in
 /// (*compensation)[entry], and its value is returned.
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
+                                     Kokkos::View<const unsigned char*, MemSpace> free_side,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
                                      Real dt,
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned = {},

@@ -31,6 +31,7 @@ struct CheckpointState {
   std::vector<Real> flux_last_step;            ///< (m^3/m) per hydraulic condition
   std::vector<Real> flux_cumulative;           ///< (m^3/m) per hydraulic condition
   Real flux_all_nodes_cumulative = 0;          ///< (m^3/m)
+  Real flux_interior_nodes_cumulative = 0;     ///< (m^3/m) of it on no free side
   std::vector<std::string> stage_log;          ///< what the run logged so far
   ExplicitTwoPhaseSolver::ResumeState solver;  ///< time, step diagnostics, dt controller
   bool has_relaxation = false;                 ///< the stage watches for rest (mid_stage)

@@ -130,6 +130,7 @@ class Simulation {
   std::vector<Real> flux_last_step_;          ///< m^3/m through each, last step
   std::vector<Real> flux_cumulative_;         ///< m^3/m through each since the start
   Real flux_all_nodes_cumulative_ = 0;        ///< net inflow through all nodes (m^3/m)
+  Real flux_interior_nodes_cumulative_ = 0;   ///< of it at the nodes on no free side (m^3/m)
   Real initial_liquid_mass_ = 0;              ///< sum of the points' M_L at the start (kg/m)
   /// The points' liquid mass an implicit stage left (kg/m); < 0 once an explicit step has
   /// run since (the explicit diagnostics then hold it). See liquidMassNow().
