@@ -22,6 +22,21 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
   probe |u|          the displacement of the scene's probes MP1-MP3 (DIR/NAME_probe_*.csv, the
                      material point nearest each probe's position at the start; m)
 
+and, as diagnostics of the moving mass's water (one table per time, not charted):
+
+  volume gain        the summed change of volume since the start of the points that moved
+                     > 10 cm (L per m); with dilatancy angle 0 nearly nil in a converged slide
+  gain per cell      the mean over those points of their volumetric strain since the start
+                     divided by the cells they crossed, |u - u_start| / H (1e-3): a constant
+                     here means the gain is made a little at each cell crossed, and so grows as
+                     1/H under refinement
+  water drawn        the change of the liquid stored in the model since the start, from
+                     DIR/NAME_boundary_flux.csv (L per m)
+  made inside        the part of it the point mass balance made at the nodes on no side of
+                     the free boundary (column net_inflow_interior_nodes; L per m), where a
+                     conservative balance makes none
+  mass p_L           the volume-weighted mean liquid pressure of those points (kPa)
+
 and prints them with the change against the next finer resolution and, with three, the observed
 order p = log(|q_h - q_h/r| / |q_h/r - q_h/r^2|) / log r, the Richardson limit and the finest
 value's error bar (error_bar: Roache's grid convergence index where the changes keep their sign,
@@ -40,6 +55,8 @@ import numpy as np
 CREST_Y, TOE_X = 3.0, 6.0  # the levee_drawdown / levee_rainfall geometry (m)
 MOVED = 0.10  # a point has "moved" beyond this displacement (m)
 QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
+WATER = ("volume gain (L/m)", "gain per cell (1e-3)", "water drawn (L/m)", "made inside (L/m)",
+         "mass p_L (kPa)")
 PROBES = ("MP1_crest", "MP2_slope", "MP3_toe")  # the scenes' probes (deck Probes/Points)
 
 
@@ -66,7 +83,7 @@ def read_points(path):
     with netcdf_file(path, "r", mmap=False) as f:
         names = ["".join(c.decode() for c in row).strip("\x00 ")
                  for row in f.variables["name_nod_var"][:]]
-        want = {"displ_x", "displ_y", "volume"}
+        want = {"displ_x", "displ_y", "volume", "pressure_liquid"}
         values = {n: f.variables["vals_nod_var%d" % (k + 1)][:].copy()
                   for k, n in enumerate(names) if n in want}
         x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
@@ -92,6 +109,51 @@ def measure(x0, y0, ux, uy, volume):
     top = u[column][np.argmax(y0[column])]
     sliding = column & (u >= 0.5 * top)
     out["slip depth"] = float(CREST_Y - y0[sliding].min()) if top > MOVED else 0.0
+    return out
+
+
+def water_of_moving_mass(h, x0, ux, uy, volume, p_liquid, k0, k):
+    """The moving mass's water diagnostics (module docstring) at output k against the start
+    output k0: point displacements ux, uy and volumes per output, p_liquid (None if the run
+    has no liquid)."""
+    moved = np.hypot(ux[k], uy[k]) > MOVED
+    if moved.sum() == 0:
+        return {}
+    gain = volume[k][moved] - volume[k0][moved]
+    cells = np.hypot(ux[k][moved] - ux[k0][moved], uy[k][moved] - uy[k0][moved]) / h
+    crossed = cells > 1.0  # a point still in its first cell says nothing per cell
+    out = {"volume gain (L/m)": 1e3 * float(gain.sum())}
+    if crossed.any():
+        out["gain per cell (1e-3)"] = 1e3 * float(
+            np.mean(gain[crossed] / volume[k0][moved][crossed] / cells[crossed]))
+    if p_liquid is not None:
+        out["mass p_L (kPa)"] = 1e-3 * float(np.average(p_liquid[k][moved],
+                                                         weights=volume[k][moved]))
+    return out
+
+
+def water_drawn(directory, name, start, times):
+    """Per time of `times`: the liquid stored in the model minus that at `start` ("water
+    drawn") and, where the file has the column, the part of it made at the nodes on no side
+    of the free boundary ("made inside"), both in L/m, from DIR/NAME_boundary_flux.csv
+    (columns storage_change, net_inflow_interior_nodes); {} where the file or a row is
+    missing."""
+    path = os.path.join(directory, f"{name}_boundary_flux.csv")
+    if not os.path.exists(path):
+        return {}
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    columns = {"water drawn (L/m)": "storage_change",
+               "made inside (L/m)": "net_inflow_interior_nodes"}
+
+    def at(column, t):
+        k = int(np.argmin(np.abs(data["time"] - t)))
+        return data[column][k] if abs(data["time"][k] - t) <= 1e-6 else math.nan
+
+    out = {}
+    for t in times:
+        for label, column in columns.items():
+            if column in data.dtype.names and not math.isnan(at(column, t) - at(column, start)):
+                out.setdefault(t, {})[label] = 1e3 * float(at(column, t) - at(column, start))
     return out
 
 
@@ -129,18 +191,23 @@ def main():
         if not os.path.exists(path):
             sys.exit(f"no {path}")
         time, x0, y0, v = read_points(path)
-        rows = {}
+        rows, water = {}, {}
+        k0 = int(np.argmin(np.abs(time - args.start)))
+        drawn = water_drawn(directory, name, args.start, [args.start + t for t in args.times])
         for t in args.times:
             k = int(np.argmin(np.abs(time - (args.start + t))))
             if abs(time[k] - (args.start + t)) > 1e-6:
                 continue  # this run did not reach t
             rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
+            water[t] = water_of_moving_mass(float(h), x0, v["displ_x"], v["displ_y"],
+                                            v["volume"], v.get("pressure_liquid"), k0, k)
+            water[t].update(drawn.get(args.start + t, {}))
         probes = probe_displacements(directory, name, [args.start + t for t in rows])
         for t in rows:
             rows[t].update(probes.get(args.start + t, {}))
         wall = wall_given.get(float(h), wall_time(directory, name))
         runs.append({"h": float(h), "points": len(x0), "wall": wall,
-                     "rows": rows, "series": series[0] if series else ""})
+                     "rows": rows, "water": water, "series": series[0] if series else ""})
     groups = {}
     for r in runs:
         groups.setdefault(r["series"], []).append(r)
@@ -222,6 +289,14 @@ def table(label, runs, times):
             print(f"| {q} ({unit}) | " + " | ".join(f"{v:.3f}" for v in values) + " | "
                   + ", ".join(f"{c:+.3f}" for c in changes) + f" | {order:.2f} | {limit:.3f} | "
                   + (f"{values[-1]:.3f} ± {bar:.3f}" if not math.isnan(bar) else "-") + " |")
+        diagnostics = [q for q in WATER if any(q in r["water"].get(t, {}) for r in runs)]
+        if diagnostics:
+            print(f"\n{label} t = {t:g} s: the moving mass's water (diagnostics)")
+            print("| diagnostic | " + " | ".join(f"h = {r['h']:.3g} m" for r in runs) + " |")
+            print("|---|" + "---|" * len(runs))
+            for q in diagnostics:
+                print(f"| {q} | " + " | ".join(
+                    f"{r['water'].get(t, {}).get(q, math.nan):.3f}" for r in runs) + " |")
 
 
 if __name__ == "__main__":
