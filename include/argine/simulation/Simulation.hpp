@@ -94,6 +94,8 @@ class Simulation {
   void writeBoundaryFluxes();
   /// The points' liquid mass now (kg/m, all ranks): after an explicit step its diagnostics,
   /// after an implicit stage that stage's, before any step the initial mass.
+  /// Logs the liquid stored since the run started and the part made inside the body.
+  void logLiquidMadeInside(const StageSpec& stage);
   Real liquidMassNow() const;
   // issue P4: stage additions, probes
   void log(const std::string& line);
