@@ -77,13 +77,14 @@ def probe_displacements(directory, name, times):
     return out
 
 
-def read_points(path):
+def read_points(path, want=("displ_x", "displ_y", "volume", "pressure_liquid")):
+    """Time, initial x and y, and the point variables `want` (those present) of an argine
+    points file (Exodus II)."""
     from scipy.io import netcdf_file
 
     with netcdf_file(path, "r", mmap=False) as f:
         names = ["".join(c.decode() for c in row).strip("\x00 ")
                  for row in f.variables["name_nod_var"][:]]
-        want = {"displ_x", "displ_y", "volume", "pressure_liquid"}
         values = {n: f.variables["vals_nod_var%d" % (k + 1)][:].copy()
                   for k, n in enumerate(names) if n in want}
         x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()

@@ -11,27 +11,15 @@ kMohrCoulombTension) in red; a last row maps p_L (kPa) at --pressure-time. The t
 panel gives the share of the moved points (|u| > 0.1 m) at the cut-off.
 """
 import argparse
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import levee_convergence as lc  # noqa: E402  (the points reader and the "moved" threshold)
+
 TENSION = 3  # plastic_state of a return to the tension cut-off (MohrCoulomb.hpp)
-MOVED = 0.10  # m, as scripts/levee_convergence.py
-
-
-def read(path):
-    from scipy.io import netcdf_file
-
-    with netcdf_file(path, "r", mmap=False) as f:
-        names = ["".join(c.decode() for c in row).strip("\x00 ")
-                 for row in f.variables["name_nod_var"][:]]
-        want = {"displacement_x", "displacement_y", "plastic_state", "pressure_liquid", "volume"}
-        values = {n: f.variables["vals_nod_var%d" % (k + 1)][:].copy()
-                  for k, n in enumerate(names) if n in want}
-        values["x0"] = f.variables["coordx"][:].copy()
-        values["y0"] = f.variables["coordy"][:].copy()
-        values["time"] = f.variables["time_whole"][:].copy()
-    return values
 
 
 def output_index(time, t):
@@ -62,7 +50,10 @@ def main():
     x0, x1, y0, y1 = args.window
     for j, spec in enumerate(args.runs):
         h, directory, name = spec.split(":")[:3]
-        v = read(f"{directory}/{name}_points.e")
+        time, first_x, first_y, v = lc.read_points(
+            f"{directory}/{name}_points.e",
+            ("displacement_x", "displacement_y", "plastic_state", "pressure_liquid"))
+        v.update(time=time, x0=first_x, y0=first_y)
         size = 0.3 if len(v["x0"]) > 20000 else 1.5
         for i, t in enumerate(args.times + [args.pressure_time]):
             k = output_index(v["time"], args.start + t)
@@ -70,7 +61,7 @@ def main():
             y = v["y0"] + v["displacement_y"][k]
             ax = axes[i][j]
             if i < len(args.times):
-                moved = np.hypot(v["displacement_x"][k], v["displacement_y"][k]) > MOVED
+                moved = np.hypot(v["displacement_x"][k], v["displacement_y"][k]) > lc.MOVED
                 cracked = v["plastic_state"][k] == TENSION
                 share = (cracked & moved).sum() / max(moved.sum(), 1)
                 ax.scatter(x, y, s=size, c="lightgrey", linewidths=0)

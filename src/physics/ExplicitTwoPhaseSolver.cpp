@@ -312,13 +312,19 @@ void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   else
     free_boundary_.detect(points_);
   free_boundary_stale_ = false;
-  // The nodes of its sides, for the flux accounting's split into boundary and inside.
-  if (static_cast<int>(free_side_nodes_.extent(0)) != mesh_.numNodes())
+  // The nodes of its sides, for the flux accounting's split into boundary and inside:
+  // flags kept between detections, the old ones cleared through the old list (a detection
+  // can come every step of a slide; no pass over all nodes, no allocation).
+  if (static_cast<int>(free_side_nodes_.extent(0)) != mesh_.numNodes()) {
     free_side_nodes_ = Kokkos::View<unsigned char*, MemSpace>("free_side_nodes", mesh_.numNodes());
-  auto flag = Kokkos::create_mirror_view(free_side_nodes_);
-  Kokkos::deep_copy(flag, 0);
-  for (const int node : free_boundary_.nodes()) flag(node) = 1;
-  Kokkos::deep_copy(free_side_nodes_, flag);
+    free_side_flags_ = Kokkos::create_mirror_view(free_side_nodes_);
+    Kokkos::deep_copy(free_side_flags_, 0);
+    free_side_flagged_.clear();
+  }
+  for (const int node : free_side_flagged_) free_side_flags_(node) = 0;
+  free_side_flagged_ = free_boundary_.nodes();
+  for (const int node : free_side_flagged_) free_side_flags_(node) = 1;
+  Kokkos::deep_copy(free_side_nodes_, free_side_flags_);
   hydraulic_plan_current_ = false;
 }
 

@@ -343,6 +343,8 @@ class ExplicitTwoPhaseSolver {
   Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
   Kokkos::View<unsigned char*, MemSpace> free_side_nodes_;  ///< 1 on the free boundary's sides
+  Kokkos::View<unsigned char*, MemSpace>::HostMirror free_side_flags_;  ///< its host copy
+  std::vector<int> free_side_flagged_;  ///< the nodes flagged in it now
   Real reference_liquid_density_ = 1000;
   bool carries_liquid_ = false;    ///< some material carries liquid
   VolumetricAveraging averaging_;  ///< anti-locking averaging (materials' Locking Mitigation)
