@@ -128,6 +128,15 @@ std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& con
   return sides;
 }
 
+bool HydraulicConditions::sealsSide(const std::vector<unsigned char>& rules, const FreeSide& side) {
+  if (rules.empty()) return false;
+  for (const int node : {side.a, side.b})
+    for (int d = 0; d < kDim; ++d)
+      if (std::fabs(side.normal[d]) > 1e-9 && !(rules[node] & (d == 0 ? kLockedX : kLockedY)))
+        return false;
+  return true;
+}
+
 void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
   // node -> force on the liquid (full p^) and on the mixture (free water only: p^ > 0)
   std::map<int, std::array<Real, 2 * kDim>> forces;
@@ -218,12 +227,7 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
       for (const FreeSide& side : sides) covered.insert({side.element, side.side});
     auto rule = [&](int node) { return rules_.empty() ? 0u : unsigned{rules_[node]}; };
     auto ruled = [&](const FreeSide& side) {  // sealed, or its p_L prescribed (setOtherLiquidRules)
-      if ((rule(side.a) & rule(side.b) & kPressurePrescribed) != 0) return true;
-      for (const int node : {side.a, side.b})
-        for (int d = 0; d < kDim; ++d)
-          if (std::fabs(side.normal[d]) > 1e-9 && !(rule(node) & (d == 0 ? kLockedX : kLockedY)))
-            return false;
-      return true;
+      return (rule(side.a) & rule(side.b) & kPressurePrescribed) != 0 || sealsSide(rules_, side);
     };
     for (const FreeSide& side : boundary.sides()) {
       if (covered.count({side.element, side.side}) || ruled(side)) continue;

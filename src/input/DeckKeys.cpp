@@ -780,6 +780,20 @@ ListSchema stageKeys() {
                             "path keeps its natural condition, no flux")
                 .byDefault(std::string("atmosphere"))
                 .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
+  stage.add(KeySpec::choice("Interior Liquid Balance", Words{"point", "conservative"},
+                            "point: each point's liquid changes by its own mass balance, -dt V "
+                            "div(c w) (4.12, the thesis); where a cell inside the body is "
+                            "unevenly filled (a crack at the tension cut-off, a swollen cell of "
+                            "a slide) this makes or destroys liquid that no boundary passes "
+                            "(the boundary-flux CSV's net_inflow_interior_nodes; 2.4 L/m into "
+                            "the default levee as it drains, doc/verification.md); "
+                            "conservative: at every node on no side of the free boundary and "
+                            "under no hydraulic condition, what the point balance makes is "
+                            "given back by the points that carry the node, in proportion to "
+                            "their N n S_L V, so the body's liquid changes only at its boundary "
+                            "(doc/theory.md Sec. 5.5)")
+                .byDefault(std::string("point"))
+                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

@@ -13,6 +13,7 @@
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/DistributedStep.hpp"
+#include "argine/physics/InteriorLiquidBalance.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/PointBorneLoads.hpp"
 #include "argine/physics/PointInitialisation.hpp"
@@ -120,6 +121,10 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.local_damping_form = stage.local_damping_form;
   momentum_.fixity_keeps_relative_velocity = stage.fixity_keeps_relative_velocity;
   hydraulic_loads_at_points_ = stage.hydraulic_loads_at_points;
+  interior_liquid_conservative_ = stage.interior_liquid_conservative && carries_liquid_;
+  if (interior_liquid_conservative_ &&
+      static_cast<int>(liquid_made_inside_i_.extent(0)) != mesh_.numNodes())
+    liquid_made_inside_i_ = Kokkos::View<Real*, MemSpace>("liquid_made_inside_i", mesh_.numNodes());
   momentum_.mass_scaling = stage.mass_scaling;
   transfer_.scheme = stage.transfer;
   transfer_.blend = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
@@ -135,6 +140,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   // The atmosphere's rule needs liquid to act on, and a held p_L takes no flux.
   if (!carries_liquid_ || stage.hold_liquid_pressure) hydraulic_.dropAtmosphere();
   if (hydraulic_.atmosphere()) hydraulic_.setOtherLiquidRules(otherLiquidRules());
+  liquid_rules_ = interior_liquid_conservative_ ? otherLiquidRules() : std::vector<unsigned char>();
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 2, 0.0);
   free_boundary_stale_ = true;
   hydraulic_plan_current_ = false;
@@ -323,7 +329,12 @@ void ExplicitTwoPhaseSolver::detectFreeBoundary() {
   }
   for (const int node : free_side_flagged_) free_side_flags_(node) = 0;
   free_side_flagged_ = free_boundary_.nodes();
-  for (const int node : free_side_flagged_) free_side_flags_(node) = 1;
+  for (const int node : free_side_flagged_) free_side_flags_(node) = kNodeOnFreeSide;
+  for (const FreeSide& side : free_boundary_.sides())  // (no rules: every side is open)
+    if (!HydraulicConditions::sealsSide(liquid_rules_, side)) {
+      free_side_flags_(side.a) |= kNodeOnOpenSide;
+      free_side_flags_(side.b) |= kNodeOnOpenSide;
+    }
   Kokkos::deep_copy(free_side_nodes_, free_side_flags_);
   hydraulic_plan_current_ = false;
 }
@@ -337,9 +348,10 @@ bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
 }
 
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
-  if (hydraulic_.empty()) return;
+  // The flux weights G_i serve the conditions and the interior balance's closure.
+  if (hydraulic_.empty() && !returnsLiquidMadeInside()) return;
   detectFreeBoundary();
-  if (!hydraulicPlanIsCurrent()) {
+  if (!hydraulic_.empty() && !hydraulicPlanIsCurrent()) {
     hydraulic_.plan(time_, gravity_, free_boundary_);
     hydraulic_plan_current_ = true;
     planned_gravity_ = gravity_;
@@ -372,7 +384,7 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
                                       reproducible_sums_ ? &boundary_lo_ : nullptr);
   if (reproducible_sums_)
     foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
-  addHydraulicLoadsToGrid();  // 4.50 into 4.41 and 4.42
+  if (!hydraulic_.empty()) addHydraulicLoadsToGrid();  // 4.50 into 4.41 and 4.42
 }
 
 void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
@@ -437,6 +449,7 @@ void ExplicitTwoPhaseSolver::accountBoundaryFluxes(Real dt) {
   const std::vector<Real> masses = boundaryFluxMasses(
       hydraulic_.ownership(), conditions, ranks_ ? nodes_owned_ : nodes_in_use_, free_side_nodes_,
       boundary_fields_, grid_, dt,
+      returnsLiquidMadeInside() ? liquid_made_inside_i_ : Kokkos::View<Real*, MemSpace>(),
       ranks_ ? ranks_->nodeOwnedView() : Kokkos::View<const unsigned char*, MemSpace>(),
       reproducible_sums_ ? &flux_mass_sums_ : nullptr);  // merged over the ranks at the step's end
   for (int c = 0; c <= conditions + 1; ++c)
@@ -516,6 +529,16 @@ void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {
       points_, shapes_, table_.liquidCarrying(), nodes_in_use_, grid_, node_records_, dt, rates_,
       hydraulic_.empty() ? Kokkos::View<const unsigned char*, MemSpace>() : conditioned_i_,
       transfer_.scheme);
+  // ---- `Interior Liquid Balance: conservative`: what the point balance makes at the nodes
+  // inside the body, given back by the points around them (InteriorLiquidBalance.hpp).
+  if (returnsLiquidMadeInside()) {
+    liquidMadeAtClosedNodes(
+        nodes_in_use_, free_side_nodes_,
+        hydraulic_.empty() ? Kokkos::View<const unsigned char*, MemSpace>() : conditioned_i_,
+        boundary_fields_, grid_, dt, liquid_made_inside_i_);
+    returnLiquidMadeInside(table_, points_, shapes_, boundary_fields_, liquid_made_inside_i_,
+                           rates_);
+  }
   // ---- Locking mitigation: smoothed d eps_vol (no-op unless a material asks for it).
   averaging_.averageStrainIncrements(table_, points_, shapes_, nodes_in_use_, rates_);
   // ---- Against the Tri3 pressure checkerboard: a conservative head exchange (no-op unless a

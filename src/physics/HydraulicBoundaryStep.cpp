@@ -259,21 +259,21 @@ std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditi
                                      const ActiveNodes& active,
                                      Kokkos::View<const unsigned char*, MemSpace> free_side,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
-                                     Real dt,
+                                     Real dt, Kokkos::View<const Real*, MemSpace> returned_i,
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned,
                                      std::vector<CompensatedReal>* compensation) {
   std::vector<Real> masses(conditions + 2, 0.0);
   const auto weight_i = fields.flux_weight_i;
   const auto vl_i = grid.velocity_liquid_i;
   const auto vs_i = grid.velocity_solid_i;
-  auto inflow = KOKKOS_LAMBDA(const int i) {  // -dt w_i . G_i
-    Real sum = 0;
-    for (int d = 0; d < kDim; ++d) sum -= dt * (vl_i(i, d) - vs_i(i, d)) * weight_i(i, d);
-    return sum;
+  const bool returned = returned_i.extent(0) > 0;
+  auto inflow = KOKKOS_LAMBDA(const int i) {  // -dt w_i . G_i, less what the points gave back
+    const Real in = pointBalanceInflowAtNode(dt, vl_i, vs_i, weight_i, i);
+    return returned ? in - returned_i(i) : in;
   };
   const bool sided = free_side.extent(0) > 0;
   auto inside = KOKKOS_LAMBDA(const int i) {
-    return !sided || free_side(i) == 0;
+    return !sided || (free_side(i) & kNodeOnFreeSide) == 0;
   };
   const auto owned = ownership.node;
   const auto owner = ownership.owner;

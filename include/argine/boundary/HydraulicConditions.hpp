@@ -114,6 +114,9 @@ class HydraulicConditions {
     kPressurePrescribed = 4  ///< a `liquid pressure` condition's node
   };
   void setOtherLiquidRules(std::vector<unsigned char> rules) { rules_ = std::move(rules); }
+  /// Whether `rules` (LiquidRuleBits per mesh node; empty: none) seal the free side: both
+  /// its end nodes locked along every direction its normal has a component in.
+  static bool sealsSide(const std::vector<unsigned char>& rules, const FreeSide& side);
   const std::vector<HydraulicCondition>& conditions() const { return conditions_; }
 
   /// Builds this step's loads, corrections and ownership from the current free boundary at

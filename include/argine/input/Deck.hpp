@@ -307,6 +307,10 @@ struct StageSpec {
   /// no liquid in at suction: the air has no water to give); `open` (false, the thesis)
   /// leaves the natural condition of 4.36, p_L = 0, which draws water in at suction.
   bool atmosphere_on_free_surfaces = true;
+  /// `Interior Liquid Balance`: `point` (false, the thesis) or `conservative` (true): the
+  /// liquid the point mass balance makes at nodes inside the body is given back by the
+  /// points around them (physics/InteriorLiquidBalance.hpp).
+  bool interior_liquid_conservative = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

@@ -342,7 +342,16 @@ class ExplicitTwoPhaseSolver {
   bool hydraulic_plan_current_ = false;  ///< hydraulic_ planned on the current free boundary
   Real planned_gravity_ = 0;             ///< the gravity of that plan
   std::vector<Real> boundary_flux_volumes_;
-  Kokkos::View<unsigned char*, MemSpace> free_side_nodes_;  ///< 1 on the free boundary's sides
+  /// `Interior Liquid Balance: conservative` (StageSpec::interior_liquid_conservative) and
+  /// the mass the points give back at each closed node this step (InteriorLiquidBalance.hpp).
+  bool interior_liquid_conservative_ = false;
+  Kokkos::View<Real*, MemSpace> liquid_made_inside_i_;
+  /// otherLiquidRules() of the stage when it closes nodes (which free sides are sealed).
+  std::vector<unsigned char> liquid_rules_;
+  bool returnsLiquidMadeInside() const {
+    return interior_liquid_conservative_ && !momentum_.liquid_with_solid;
+  }
+  Kokkos::View<unsigned char*, MemSpace> free_side_nodes_;  ///< FreeSideNodeBits of each node
   Kokkos::View<unsigned char*, MemSpace>::HostMirror free_side_flags_;  ///< its host copy
   std::vector<int> free_side_flagged_;  ///< the nodes flagged in it now
   Real reference_liquid_density_ = 1000;

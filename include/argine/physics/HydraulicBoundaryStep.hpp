@@ -114,22 +114,42 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
                                 Real liquid_density, GridFields& grid,
                                 Kokkos::View<const unsigned*, MemSpace> constraints = {});
 
+/// The flags of a node's free sides (ExplicitTwoPhaseSolver's free-side node flags).
+enum FreeSideNodeBits : unsigned char {
+  kNodeOnFreeSide = 1,  ///< an end node of a free side
+  kNodeOnOpenSide = 2   ///< ... of a free side no impermeable condition seals
+};
+
+/// -dt w_i . G_i (kg per m thickness), w_i = v_L - v_S: the liquid mass the point mass balance
+/// gives the points at node i this step (the "Flux accounting" above).
+template <class Velocities, class Weights>
+KOKKOS_INLINE_FUNCTION Real pointBalanceInflowAtNode(Real dt, const Velocities& velocity_liquid,
+                                                     const Velocities& velocity_solid,
+                                                     const Weights& flux_weight, int i) {
+  Real sum = 0;
+  for (int d = 0; d < kDim; ++d)
+    sum -= dt * (velocity_liquid(i, d) - velocity_solid(i, d)) * flux_weight(i, d);
+  return sum;
+}
+
 /// Liquid mass (kg per m thickness) that entered the soil this step through the nodes of
 /// each condition: -dt sum_{i owned} w_i . G_i, entries [0, conditions); entry [conditions]
 /// is the same sum over ALL active nodes (= the change of the points' liquid mass); entry
 /// [conditions + 1] the sum over the active nodes on no side of the free boundary
-/// (`free_side`: 1 at the nodes of its sides; empty: none), where G_i would vanish if the
-/// points filled their cells evenly: the liquid the point mass balance makes inside the
-/// body (doc/theory.md Sec. 5.5, "Flux accounting").
-/// `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the condition sums then
-/// count only those (each node on one rank), as `active` does for the total. Empty: all.
-/// With `compensation` (reproducible sums) each entry is a reproducible sum, in
+/// (`free_side`: kNodeOnFreeSide at the nodes of its sides; empty: none), where G_i would vanish if
+/// the points filled their cells evenly: the liquid the point mass balance makes inside the body
+/// (doc/theory.md Sec. 5.5, "Flux accounting"). `returned_i` (one entry per mesh node; empty:
+/// none): the mass the points gave back at each node this step (`Interior Liquid Balance:
+/// conservative`, InteriorLiquidBalance.hpp), taken off that node's inflow, so the entries stay the
+/// points' actual change. `rank_owned` (several MPI ranks): 1 at the nodes this rank owns; the
+/// condition sums then count only those (each node on one rank), as `active` does for the total.
+/// Empty: all. With `compensation` (reproducible sums) each entry is a reproducible sum, in
 /// (*compensation)[entry], and its value is returned.
 std::vector<Real> boundaryFluxMasses(const NodeOwnership& ownership, int conditions,
                                      const ActiveNodes& active,
                                      Kokkos::View<const unsigned char*, MemSpace> free_side,
                                      const BoundaryGradientFields& fields, const GridFields& grid,
-                                     Real dt,
+                                     Real dt, Kokkos::View<const Real*, MemSpace> returned_i = {},
                                      Kokkos::View<const unsigned char*, MemSpace> rank_owned = {},
                                      std::vector<CompensatedReal>* compensation = nullptr);
 
