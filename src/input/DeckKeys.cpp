@@ -787,8 +787,9 @@ ListSchema stageKeys() {
                             "a slide) this makes or destroys liquid that no boundary passes "
                             "(the boundary-flux CSV's net_inflow_interior_nodes; 2.4 L/m into "
                             "the default levee as it drains, doc/verification.md); "
-                            "conservative: at every node on no side of the free boundary and "
-                            "under no hydraulic condition, what the point balance makes is "
+                            "conservative: at every node inside the body or on sides that "
+                            "impermeable conditions seal, under no hydraulic condition, what "
+                            "the point balance makes is "
                             "given back by the points that carry the node, in proportion to "
                             "their N n S_L V, so the body's liquid changes only at its boundary "
                             "(doc/theory.md Sec. 5.5)")

@@ -25,8 +25,10 @@
 /// as the weak (Galerkin) balance, whose nodal fluxes sum to zero because sum_i grad N_i = 0,
 /// would have it. Where the cells are evenly filled G_i = 0 and nothing changes: the point
 /// balance is the thesis' (4.12) there. Where they are not, the liquid a point's own
-/// divergence brings is spread over the node's support, one cell each way; the exchange acts
-/// at the step's flux and is gone when the cells fill evenly again.
+/// divergence brings is spread over the node's support, one cell each way, by wet volume and
+/// not by pressure: where w_i . G_i stays non-zero at rest it keeps moving liquid between the
+/// node's points (3 crest points of the default levee dried past the physical p_L range;
+/// doc/theory.md Sec. 5.5, "Measured limit").
 /// `point` (the default, the thesis): no correction.
 
 #include "argine/core/Types.hpp"
