@@ -460,6 +460,7 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
                                        : hydraulic_loads == "at boundary points";
   spec.atmosphere_on_free_surfaces = stage.word("Surfaces Without Condition") == "atmosphere";
   spec.interior_liquid_conservative = stage.word("Interior Liquid Balance") == "conservative";
+  spec.free_surface_suction_held = stage.word("Free Surface Liquid Pressure") == "suction held";
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

@@ -43,7 +43,13 @@ std::vector<NodalFieldRef> momentumRefs(const GridFields& g) {
 }
 
 std::vector<NodalFieldRef> boundaryRefs(const BoundaryGradientFields& f) {
-  return {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i), nodalField(f.wet_volume_i)};
+  std::vector<NodalFieldRef> refs = {nodalField(f.mass_gradient_i), nodalField(f.flux_weight_i),
+                                     nodalField(f.wet_volume_i)};
+  if (f.with_surface_pressure) {
+    refs.push_back(nodalField(f.volume_gradient_i));
+    refs.push_back(nodalField(f.pressure_volume_i));
+  }
+  return refs;
 }
 
 }  // namespace

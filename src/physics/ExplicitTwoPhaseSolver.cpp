@@ -13,6 +13,7 @@
 #include "argine/parallel/PointMigration.hpp"
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/DistributedStep.hpp"
+#include "argine/physics/FreeSurfaceSuction.hpp"
 #include "argine/physics/InteriorLiquidBalance.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/PointBorneLoads.hpp"
@@ -122,6 +123,11 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.fixity_keeps_relative_velocity = stage.fixity_keeps_relative_velocity;
   hydraulic_loads_at_points_ = stage.hydraulic_loads_at_points;
   interior_liquid_conservative_ = stage.interior_liquid_conservative && carries_liquid_;
+  free_surface_suction_held_ =
+      stage.free_surface_suction_held && carries_liquid_ && !stage.hold_liquid_pressure;
+  boundary_fields_.with_surface_pressure = free_surface_suction_held_;
+  for (int k = 0; k < kLowParts; ++k)
+    boundary_lo_[k].with_surface_pressure = free_surface_suction_held_;
   if (interior_liquid_conservative_ &&
       static_cast<int>(liquid_made_inside_i_.extent(0)) != mesh_.numNodes())
     liquid_made_inside_i_ = Kokkos::View<Real*, MemSpace>("liquid_made_inside_i", mesh_.numNodes());
@@ -348,8 +354,9 @@ bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
 }
 
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
-  // The flux weights G_i serve the conditions and the interior balance's closure.
-  if (hydraulic_.empty() && !returnsLiquidMadeInside()) return;
+  // The flux weights G_i serve the conditions and the interior balance's closure, the
+  // volume gradients the surface's suction.
+  if (hydraulic_.empty() && !returnsLiquidMadeInside() && !free_surface_suction_held_) return;
   detectFreeBoundary();
   if (!hydraulic_.empty() && !hydraulicPlanIsCurrent()) {
     hydraulic_.plan(time_, gravity_, free_boundary_);
@@ -385,6 +392,11 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   if (reproducible_sums_)
     foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
   if (!hydraulic_.empty()) addHydraulicLoadsToGrid();  // 4.50 into 4.41 and 4.42
+  if (free_surface_suction_held_)                      // the air pulls on no water at suction
+    holdSuctionAtFreeSurfaces(
+        nodes_in_use_,
+        hydraulic_.empty() ? Kokkos::View<const unsigned char*, MemSpace>() : conditioned_i_,
+        boundary_fields_, grid_);
 }
 
 void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {

@@ -33,11 +33,17 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   auto gradient_sv = KE::create_scatter_view(fields.mass_gradient_i);
   auto weight_sv = KE::create_scatter_view(fields.flux_weight_i);
   auto wet_sv = KE::create_scatter_view(fields.wet_volume_i);
+  auto volume_gradient_sv = KE::create_scatter_view(fields.volume_gradient_i);
+  auto pressure_volume_sv = KE::create_scatter_view(fields.pressure_volume_i);
+  const auto pressure_p = points.pressure_liquid;
+  const bool surface_pressure = fields.with_surface_pressure;
   const BoundaryGradientFields hi = fields;
   using B = BoundaryGradientFields;
   const auto lo_gradient = lowPartsOf(lo, &B::mass_gradient_i);
   const auto lo_weight = lowPartsOf(lo, &B::flux_weight_i);
   const auto lo_wet = lowPartsOf(lo, &B::wet_volume_i);
+  const auto lo_volume_gradient = lowPartsOf(lo, &B::volume_gradient_i);
+  const auto lo_pressure_volume = lowPartsOf(lo, &B::pressure_volume_i);
   constexpr int kNodes = Family::kNodes;
   Kokkos::parallel_for(
       "p2g_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, points.count),
@@ -60,6 +66,18 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
         for (int a = 0; a < kNodes; ++a)
           addToNode<kCompensated>(wet_i, hi.wet_volume_i, lo_wet, shape.node[a],
                                   shape.value[a] * wet_volume);
+        if (surface_pressure) {
+          auto volume_gradient_i = volume_gradient_sv.access();
+          auto pressure_volume_i = pressure_volume_sv.access();
+          const Real pressure_volume = pressure_p(p) * volume;
+          for (int a = 0; a < kNodes; ++a) {
+            addToNode<kCompensated>(pressure_volume_i, hi.pressure_volume_i, lo_pressure_volume,
+                                    shape.node[a], shape.value[a] * pressure_volume);
+            for (int d = 0; d < kDim; ++d)
+              addToNode<kCompensated>(volume_gradient_i, hi.volume_gradient_i, lo_volume_gradient,
+                                      shape.node[a], d, volume * shape.gradient[a][d]);
+          }
+        }
         if (materials_m(material_p(p)).mass_balance == MassBalanceForm::Complete) {
           // the weights with which the strain kernel's advective flux reads the nodes
           // (Family::fluxCentre: the element centre, or the centre of the point's grid cell)
@@ -88,6 +106,10 @@ void mapBoundaryGradientsImpl(const MaterialPoints& points, const PointShapes& s
   KE::contribute(fields.mass_gradient_i, gradient_sv);
   KE::contribute(fields.flux_weight_i, weight_sv);
   KE::contribute(fields.wet_volume_i, wet_sv);
+  if (surface_pressure) {
+    KE::contribute(fields.volume_gradient_i, volume_gradient_sv);
+    KE::contribute(fields.pressure_volume_i, pressure_volume_sv);
+  }
 }
 
 /// n_L = n S_L at node i, mapped from the points: sum N n S_L V / sum N V.
@@ -101,18 +123,27 @@ void BoundaryGradientFields::allocate(int num_nodes) {
   mass_gradient_i = Kokkos::View<Real* [kDim], MemSpace>("mass_gradient_i", num_nodes);
   flux_weight_i = Kokkos::View<Real* [kDim], MemSpace>("flux_weight_i", num_nodes);
   wet_volume_i = Kokkos::View<Real*, MemSpace>("wet_volume_i", num_nodes);
+  volume_gradient_i = Kokkos::View<Real* [kDim], MemSpace>("volume_gradient_i", num_nodes);
+  pressure_volume_i = Kokkos::View<Real*, MemSpace>("pressure_volume_i", num_nodes);
 }
 
 void BoundaryGradientFields::zero(const ActiveNodes& active) {
   const auto nodes = active.nodes();
   const auto g = mass_gradient_i, w = flux_weight_i;
   const auto v = wet_volume_i;
+  const auto vg = volume_gradient_i;
+  const auto pv = pressure_volume_i;
+  const bool surface_pressure = with_surface_pressure;
   Kokkos::parallel_for(
       "zero_boundary_gradients", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
         const int i = nodes(j);
         for (int d = 0; d < kDim; ++d) g(i, d) = w(i, d) = 0;
         v(i) = 0;
+        if (surface_pressure) {
+          for (int d = 0; d < kDim; ++d) vg(i, d) = 0;
+          pv(i) = 0;
+        }
       });
 }
 
@@ -136,6 +167,9 @@ void foldCompensatedBoundarySums(const ActiveNodes& nodes, BoundaryGradientField
   foldCompensatedSums(nodes, f.mass_gradient_i, lowPartsOf(lo, &B::mass_gradient_i));
   foldCompensatedSums(nodes, f.flux_weight_i, lowPartsOf(lo, &B::flux_weight_i));
   foldCompensatedSums(nodes, f.wet_volume_i, lowPartsOf(lo, &B::wet_volume_i));
+  if (!f.with_surface_pressure) return;
+  foldCompensatedSums(nodes, f.volume_gradient_i, lowPartsOf(lo, &B::volume_gradient_i));
+  foldCompensatedSums(nodes, f.pressure_volume_i, lowPartsOf(lo, &B::pressure_volume_i));
 }
 
 void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {

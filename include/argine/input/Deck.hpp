@@ -311,6 +311,10 @@ struct StageSpec {
   /// liquid the point mass balance makes at nodes inside the body is given back by the
   /// points around them (physics/InteriorLiquidBalance.hpp).
   bool interior_liquid_conservative = false;
+  /// `Free Surface Liquid Pressure`: `zero` (false, the thesis) or `suction held` (true):
+  /// where the soil's liquid is at suction its free surfaces carry that suction, so the air
+  /// pulls on no water (physics/FreeSurfaceSuction.hpp).
+  bool free_surface_suction_held = false;
   Real output_interval = 0;          ///< (s); 0: only at the end of the stage
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;

@@ -345,6 +345,8 @@ class ExplicitTwoPhaseSolver {
   /// `Interior Liquid Balance: conservative` (StageSpec::interior_liquid_conservative) and
   /// the mass the points give back at each closed node this step (InteriorLiquidBalance.hpp).
   bool interior_liquid_conservative_ = false;
+  /// `Free Surface Liquid Pressure: suction held` (FreeSurfaceSuction.hpp).
+  bool free_surface_suction_held_ = false;
   Kokkos::View<Real*, MemSpace> liquid_made_inside_i_;
   /// otherLiquidRules() of the stage when it closes nodes (which free sides are sealed).
   std::vector<unsigned char> liquid_rules_;

@@ -59,6 +59,11 @@ struct BoundaryGradientFields {
   Kokkos::View<Real* [kDim], MemSpace> mass_gradient_i;  ///< sum_p m_m grad N_i (4.51), outward
   Kokkos::View<Real* [kDim], MemSpace> flux_weight_i;    ///< G_i (kg/m^2 per m thickness)
   Kokkos::View<Real*, MemSpace> wet_volume_i;            ///< sum_p N_i n S_L V (m^3)
+  /// `Free Surface Liquid Pressure: suction held` only (FreeSurfaceSuction.hpp), else not
+  /// mapped: sum_p V grad N_i of the liquid-carrying points (m^2 per m thickness) ...
+  Kokkos::View<Real* [kDim], MemSpace> volume_gradient_i;
+  Kokkos::View<Real*, MemSpace> pressure_volume_i;  ///< ... and sum_p N_i p_L V (Pa m^3)
+  bool with_surface_pressure = false;               ///< whether the two above are mapped
   void allocate(int num_nodes);
   /// Zero on the listed nodes only.
   void zero(const ActiveNodes& nodes);

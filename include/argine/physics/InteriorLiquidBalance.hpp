@@ -28,7 +28,10 @@
 /// divergence brings is spread over the node's support, one cell each way, by wet volume and
 /// not by pressure: where w_i . G_i stays non-zero at rest it keeps moving liquid between the
 /// node's points (3 crest points of the default levee dried past the physical p_L range;
-/// doc/theory.md Sec. 5.5, "Measured limit").
+/// doc/theory.md Sec. 5.5, "Measured limit"). What kept w_i . G_i non-zero there is the
+/// air's pull on the water at part-filled cells at suction; with `Free Surface Liquid
+/// Pressure: suction held` (FreeSurfaceSuction.hpp) beside the closure no point leaves the
+/// range.
 /// `point` (the default, the thesis): no correction.
 
 #include "argine/core/Types.hpp"
