@@ -795,16 +795,19 @@ ListSchema stageKeys() {
                             "(doc/theory.md Sec. 5.5)")
                 .byDefault(std::string("point"))
                 .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
-  stage.add(KeySpec::choice("Free Surface Liquid Pressure", Words{"zero", "suction held"},
-                            "zero: the liquid's natural condition p_L = 0 wherever the points "
-                            "end, on the free sides and inside part-filled cells (4.36, the "
-                            "thesis); at suction the air then pulls on the soil's water; "
-                            "suction held: where a node's liquid is at suction the surface "
-                            "carries that suction (menisci), so nothing pulls water from the "
-                            "air; at p_L >= 0 the surface stays at 0; changes only nodes whose "
-                            "support a surface cuts (doc/theory.md Sec. 5.5)")
-                .byDefault(std::string("zero"))
-                .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
+  stage.add(
+      KeySpec::choice(
+          "Free Surface Liquid Pressure", Words{"zero", "suction held"},
+          "zero: the liquid's natural condition p_L = 0 wherever the points "
+          "end, on the free sides and inside part-filled cells (4.36, the "
+          "thesis); at suction the air then pulls on the soil's water; "
+          "suction held: where a node's liquid is at suction the surface "
+          "carries that suction (menisci), so nothing pulls water from the "
+          "air; at p_L >= 0 the surface stays at 0; changes only nodes whose "
+          "support a surface cuts; needs Interior Liquid Balance: conservative (doc/theory.md "
+          "Sec. 5.5)")
+          .byDefault(std::string("zero"))
+          .when("Solver", {"explicit", "fixed skeleton", "quasi-static"}));
   stage.add(
       KeySpec::real("Mass Scaling", "-", "factor on the nodal masses").atLeast(1).byDefault(1.0));
   Words transfers = deckWords(kTransferSchemeWords);

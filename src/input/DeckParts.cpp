@@ -461,6 +461,16 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
   spec.atmosphere_on_free_surfaces = stage.word("Surfaces Without Condition") == "atmosphere";
   spec.interior_liquid_conservative = stage.word("Interior Liquid Balance") == "conservative";
   spec.free_surface_suction_held = stage.word("Free Surface Liquid Pressure") == "suction held";
+  // The held surface subtracts pi_i sum_p V grad N_i from the pressure force; the closure
+  // subtracts the matching sum_i N_i V / W_i w_i . G_i from the points' divergence. Only
+  // together is the force the transpose of the mass balance's divergence (the pairing on
+  // which the explicit step's energy rests): held alone went unstable on the Tri3 levee
+  // at 0.1 m (doc/verification.md, "The air's pull held").
+  if (spec.free_surface_suction_held && !spec.interior_liquid_conservative)
+    throw InputError(stage.pathOf("Free Surface Liquid Pressure"),
+                     "'suction held' needs 'Interior Liquid Balance: conservative' in the same "
+                     "stage (alone it breaks the pairing of the liquid's pressure force with the "
+                     "point mass balance, and went unstable on the Tri3 levee)");
   spec.mass_scaling = stage.real("Mass Scaling");
   const std::string transfer = stage.word("Velocity Transfer");
   spec.transfer = transfer == kTransferByShapeFunctions ? transferForShapes(shapes)

@@ -112,6 +112,20 @@ TEST(DeckStageAdditions, LiquidPressureHeldOnlyInQuasiStaticStages) {
       "Stages/load/Liquid Pressure", "allowed: free, held");
 }
 
+TEST(DeckStageAdditions, SuctionHeldSurfacesNeedTheConservativeInteriorBalance) {
+  // `Free Surface Liquid Pressure: suction held` and `Interior Liquid Balance: conservative`
+  // pair the pressure force with the point balance; the held surface alone is refused.
+  const std::string both = deckWithStageAdditions(
+      "      Interior Liquid Balance: conservative\n"
+      "      Free Surface Liquid Pressure: suction held\n");
+  EXPECT_TRUE(parseText(both).stages[0].free_surface_suction_held);
+  EXPECT_TRUE(parseText(both).stages[0].interior_liquid_conservative);
+  EXPECT_FALSE(parseText(kBaseDeck).stages[0].free_surface_suction_held);
+  expectInputError(
+      [&] { parseText(replaced(both, "      Interior Liquid Balance: conservative\n", "")); },
+      "Stages/load/Free Surface Liquid Pressure", "needs 'Interior Liquid Balance: conservative'");
+}
+
 TEST(DeckStageAdditions, FrictionAngleChangeIsConvertedToRadians) {
   const std::string mohr =
       replaced(kBaseDeck, "Model: linear elastic",

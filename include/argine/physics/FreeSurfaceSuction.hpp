@@ -24,6 +24,12 @@
 /// (the integral of grad N_i over the node's support), so nothing changes there; only the
 /// nodes whose support a surface cuts see it. The nodes of a hydraulic condition keep the
 /// condition's surface pressure (its loads, 4.50). `zero` (the default): the thesis.
+///
+/// Only with `Interior Liquid Balance: conservative` (the deck refuses it alone): the term
+/// subtracted here has the closure's share (InteriorLiquidBalance.hpp) as its transpose, so
+/// the pair keeps the pressure force the transpose of the point balance's divergence, on
+/// which the explicit step's energy rests; alone it went unstable on the Tri3 levee at
+/// 0.1 m with any step (doc/theory.md Sec. 5.5, "Only with the closure").
 
 #include "argine/core/Types.hpp"
 
