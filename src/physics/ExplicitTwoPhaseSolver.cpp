@@ -123,11 +123,10 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   momentum_.fixity_keeps_relative_velocity = stage.fixity_keeps_relative_velocity;
   hydraulic_loads_at_points_ = stage.hydraulic_loads_at_points;
   interior_liquid_conservative_ = stage.interior_liquid_conservative && carries_liquid_;
-  free_surface_suction_held_ =
+  const bool suction_held =
       stage.free_surface_suction_held && carries_liquid_ && !stage.hold_liquid_pressure;
-  boundary_fields_.with_surface_pressure = free_surface_suction_held_;
-  for (int k = 0; k < kLowParts; ++k)
-    boundary_lo_[k].with_surface_pressure = free_surface_suction_held_;
+  boundary_fields_.with_surface_pressure = suction_held;
+  for (int k = 0; k < kLowParts; ++k) boundary_lo_[k].with_surface_pressure = suction_held;
   if (interior_liquid_conservative_ &&
       static_cast<int>(liquid_made_inside_i_.extent(0)) != mesh_.numNodes())
     liquid_made_inside_i_ = Kokkos::View<Real*, MemSpace>("liquid_made_inside_i", mesh_.numNodes());
@@ -356,7 +355,7 @@ bool ExplicitTwoPhaseSolver::hydraulicPlanIsCurrent() const {
 void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   // The flux weights G_i serve the conditions and the interior balance's closure, the
   // volume gradients the surface's suction.
-  if (hydraulic_.empty() && !returnsLiquidMadeInside() && !free_surface_suction_held_) return;
+  if (hydraulic_.empty() && !returnsLiquidMadeInside() && !holdsSuctionAtFreeSurfaces()) return;
   detectFreeBoundary();
   if (!hydraulic_.empty() && !hydraulicPlanIsCurrent()) {
     hydraulic_.plan(time_, gravity_, free_boundary_);
@@ -392,7 +391,7 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
   if (reproducible_sums_)
     foldCompensatedBoundarySums(nodes_in_use_, boundary_fields_, boundary_lo_);
   if (!hydraulic_.empty()) addHydraulicLoadsToGrid();  // 4.50 into 4.41 and 4.42
-  if (free_surface_suction_held_)                      // the air pulls on no water at suction
+  if (holdsSuctionAtFreeSurfaces())                    // the air pulls on no water at suction
     holdSuctionAtFreeSurfaces(
         nodes_in_use_,
         hydraulic_.empty() ? Kokkos::View<const unsigned char*, MemSpace>() : conditioned_i_,

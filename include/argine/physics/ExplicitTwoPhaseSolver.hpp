@@ -345,14 +345,15 @@ class ExplicitTwoPhaseSolver {
   /// `Interior Liquid Balance: conservative` (StageSpec::interior_liquid_conservative) and
   /// the mass the points give back at each closed node this step (InteriorLiquidBalance.hpp).
   bool interior_liquid_conservative_ = false;
-  /// `Free Surface Liquid Pressure: suction held` (FreeSurfaceSuction.hpp).
-  bool free_surface_suction_held_ = false;
   Kokkos::View<Real*, MemSpace> liquid_made_inside_i_;
   /// otherLiquidRules() of the stage when it closes nodes (which free sides are sealed).
   std::vector<unsigned char> liquid_rules_;
   bool returnsLiquidMadeInside() const {
     return interior_liquid_conservative_ && !momentum_.liquid_with_solid;
   }
+  /// `Free Surface Liquid Pressure: suction held` in this stage (FreeSurfaceSuction.hpp):
+  /// whether the boundary pass maps the volume gradients and nodal pressures it reads.
+  bool holdsSuctionAtFreeSurfaces() const { return boundary_fields_.with_surface_pressure; }
   Kokkos::View<unsigned char*, MemSpace> free_side_nodes_;  ///< FreeSideNodeBits of each node
   Kokkos::View<unsigned char*, MemSpace>::HostMirror free_side_flags_;  ///< its host copy
   std::vector<int> free_side_flagged_;  ///< the nodes flagged in it now
