@@ -134,11 +134,24 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
           for (int a = 0; a < nodes_per_element; ++a) {
             // a node of no weight may have no sums at all (a grid family's stencil corner)
             if (shape.value[a] == 0) continue;
-            const int i = shape.node[a];
-            average += shape.value[a] * node_sums(i, 2 * c) / node_sums(i, 2 * c + 1);
+            average += shape.value[a] * node_sums(shape.node[a], 2 * c);  // the node's average
           }
           value_pc(p, c) = average;
         }
+      });
+}
+
+/// node_sums(i, 2c) <- sum N w q / sum N w, channel c's average at every active node: one
+/// division a node and channel instead of one a point, node and channel in gatherAverages.
+void divideNodeSums(const ActiveNodes& active, const AveragingScratch& scratch) {
+  const auto active_nodes = active.nodes();
+  const int channels = scratch.channels();
+  const auto node_sums = scratch.node_sums;
+  Kokkos::parallel_for(
+      "averaging_node_averages", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = active_nodes(j);
+        for (int c = 0; c < channels; ++c) node_sums(i, 2 * c) /= node_sums(i, 2 * c + 1);
       });
 }
 
@@ -183,6 +196,7 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
                         const ActiveNodes& active, AveragingScratch& scratch,
                         NodalExchange* exchange) {
   sumPointValues(points, shapes, active, scratch, exchange);
+  divideNodeSums(active, scratch);
   withShapeFamily(shapes, [&](auto family) {
     withChannelCount(scratch.channels(), [&](auto n) {
       gatherAverages<decltype(family), decltype(n)::value>(points, shapes, scratch);

@@ -93,6 +93,42 @@ TEST(KernelMath, LogNearOneGivesEachLaneTheOneValueBits) {
   }
 }
 
+// expNearZero: within 1 ulp of e^x (long double reference) on |x| <= 2^-8, down to 2^-60, and
+// the library's exp to the bit outside; each lane gets the one-value bits.
+TEST(KernelMath, ExpNearZeroIsWithinOneUlpOnItsIntervalAndTheLibraryExpOutside) {
+  std::mt19937_64 random(13);
+  Real worst = 0, worst_library = 0;
+  int differ = 0, samples = 0;
+  for (int k = 8; k <= 60; k += 4) {
+    std::uniform_real_distribution<Real> near(-std::ldexp(1.0, -k), std::ldexp(1.0, -k));
+    for (int i = 0; i < 20000; ++i) {
+      const Real x = near(random);
+      const Real ours = kmath::expNearZero(x), library = std::exp(x);
+      const long double reference = std::exp(static_cast<long double>(x));
+      worst = std::max(worst, ulpsApart(ours, reference));
+      worst_library = std::max(worst_library, ulpsApart(library, reference));
+      differ += ours != library;
+      ++samples;
+    }
+  }
+  EXPECT_LE(worst, 1.0) << "library: " << worst_library;
+  EXPECT_LT(differ, samples / 10);
+  EXPECT_EQ(kmath::expNearZero(0.0), 1.0);
+  for (Real x : {0.00390625, -0.00390625})  // the interval's ends
+    EXPECT_LE(ulpsApart(kmath::expNearZero(x), std::exp(static_cast<long double>(x))), 1.0);
+  for (Real x : {0.0039063, -0.0039063, 0.5, -3.0, 700.0, -800.0}) {
+    const Real ours = kmath::expNearZero(x), library = std::exp(x);
+    EXPECT_EQ(std::memcmp(&ours, &library, sizeof ours), 0) << x;
+  }
+  EXPECT_TRUE(std::isnan(kmath::expNearZero(std::nan(""))));
+  const Lanes mixed = {1e-5, -2.0, -3e-4, 0.25};
+  const Lanes lanes = kmath::expNearZero(mixed);
+  for (int l = 0; l < kLanes; ++l) {
+    const Real one = kmath::expNearZero(mixed[l]);
+    EXPECT_EQ(std::memcmp(&one, &lanes[l], sizeof one), 0) << l;
+  }
+}
+
 // powKnown: the exponents taken without pow agree with pow within 1 ulp (x * x and sqrt to the
 // bit) over 12 decades, at 0, -0 and infinity; any other exponent is pow itself.
 TEST(KernelMath, PowKnownAgreesWithPow) {

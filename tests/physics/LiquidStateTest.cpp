@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "argine/physics/LiquidState.hpp"
 
@@ -65,6 +66,43 @@ TEST(LiquidState, UnsaturatedPressureIsFoundFromAGuessWhereTheSaturationIsZero) 
   const Real p = -5e3, content = contentAt(m, p);
   for (const Real guess : {-4.2e6, -1e9, 7e3})
     EXPECT_NEAR(pressureOfLiquidContent(m, content, guess), p, 1e-13 * kBulk) << guess;
+}
+
+TEST(LiquidState, LanesOfALinearCurveGetTheOnePointRootOrDeclineTheKink) {
+  // pressureOfLiquidContentLanes: four points at suctions and (with occluded air) at p_L > 0,
+  // each from a guess off the root, get pressureOfLiquidContent's bits; a lane whose guess
+  // lies where S_L = S_min (a flat curve: a step out of any bracket), or with no content,
+  // makes it decline and leave the pressures alone.
+  for (const Real air : {0.0, 101325.0}) {
+    PointMaterial m = material(PhaseModel::Unsaturated);
+    m.retention.model = RetentionModel::Linear;
+    m.retention.linear_slope = 4e-7;
+    m.retention.saturation_min = 0;
+    m.retention.saturation_max = air > 0 ? 0.95 : 1;
+    m.retention.occluded_air_pressure = air;
+    auto content = [&](Real p) {
+      return saturationAtPressure(m.retention, p) * liquidDensity(m.liquid, p);
+    };
+    const Lanes roots = {-5e3, -31e3, -700.0, air > 0 ? 3e3 : -2e5};
+    const Lanes guesses = roots + Lanes{40.0, -250.0, 3.0, air > 0 ? 90.0 : -1e3};
+    Lanes contents;
+    for (int l = 0; l < kLanes; ++l) contents[l] = content(roots[l]);
+    Lanes found = {7, 7, 7, 7};
+    ASSERT_TRUE(pressureOfLiquidContentLanes(m, contents, guesses, found));
+    for (int l = 0; l < kLanes; ++l) {
+      const Real one = pressureOfLiquidContent(m, contents[l], guesses[l]);
+      EXPECT_EQ(std::memcmp(&one, &found[l], sizeof one), 0) << l << ": " << found[l];
+      EXPECT_NEAR(found[l], roots[l], 1e-13 * kBulk);
+    }
+    Lanes across = guesses;
+    across[1] = -3e6;  // S_L = S_min there: a flat curve, a step to infinity
+    Lanes untouched = {7, 7, 7, 7};
+    EXPECT_FALSE(pressureOfLiquidContentLanes(m, contents, across, untouched));
+    Lanes empty = contents;
+    empty[1] = 0;
+    EXPECT_FALSE(pressureOfLiquidContentLanes(m, empty, guesses, untouched));
+    for (int l = 0; l < kLanes; ++l) EXPECT_EQ(untouched[l], 7);
+  }
 }
 
 TEST(LiquidState, OccludedAirMakesThePositivePressureSoftAndIsInvertedExactly) {

@@ -1,7 +1,9 @@
 // [Plasticity][2Phase] updatePointStates takes kLanes points at once where they share a
 // material with a lane stress update (physics/PointUpdates.hpp); every point must get the
 // bits of the one-point updates, whichever way it went: elastic or plastic lanes, each phase
-// model, the suction-dependent model (no lane form), lost points and a ragged end.
+// model, the suction-dependent model (no lane form), unsaturated lanes whose pressure takes the
+// Newton iterations at once or point by point (a kink crossed, an air-filled crack open), lost
+// points and a ragged end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +40,10 @@ std::vector<MaterialSpec> materials() {
   suction.solid.friction_suction_rate = 0.1;
   suction.solid.cohesion_increase_max = 5e3;
   suction.solid.cohesion_suction_rate = 1;
-  return {saturated_mc, elastic, unsaturated, dry, suction};
+  MaterialSpec cracks = unsaturated;  // an open air-filled crack: its lanes point by point
+  cracks.name = "cracks";
+  cracks.tension_cracks = TensionCracks::AirFilled;
+  return {saturated_mc, elastic, unsaturated, dry, suction, cracks};
 }
 
 /// Random point states and increments: materials by blocks of kLanes (some blocks mixed),
@@ -49,7 +54,7 @@ void randomise(MaterialPoints& points, PointRates& rates, unsigned seed) {
   std::uniform_real_distribution<Real> u(-1, 1);
   for (int p = 0; p < points.count; ++p) {
     const int block = p / kLanes;
-    points.material(p) = block % 7 == 6 ? p % 5 : block % 5;
+    points.material(p) = block % 7 == 6 ? p % 6 : block % 6;
     points.element(p) = p == 13 ? -1 : p;
     points.volume(p) = 0.01 * (1 + 0.2 * u(rng));
     points.porosity(p) = 0.4 + 0.05 * u(rng);

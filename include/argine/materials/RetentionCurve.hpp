@@ -70,13 +70,27 @@ KOKKOS_INLINE_FUNCTION Real vanGenuchtenSlope(const RetentionSpec& spec,
 }
 }  // namespace detail
 
+/// The linear curve (Eq. 5.6 with S_max in place of 1, clipped at S_min) at suction s > 0:
+/// S_L = max(S_max - a_v s, S_min), and its slope dS_L/ds = -a_v above S_min, 0 on the clipped
+/// part. T = Real, or Lanes for kLanes points (the Real form's bits in each lane).
+template <class T>
+KOKKOS_INLINE_FUNCTION T linearSaturation(const RetentionSpec& spec, T suction) {
+  return kmath::fmax(spec.saturation_max - spec.linear_slope * suction,
+                     splat<T>(spec.saturation_min));
+}
+template <class T>
+KOKKOS_INLINE_FUNCTION T linearSaturationSlope(const RetentionSpec& spec, T suction) {
+  return select(spec.saturation_max - spec.linear_slope * suction > spec.saturation_min,
+                splat<T>(-spec.linear_slope), splat<T>(0));
+}
+
 /// Degree of saturation S_L(s) (-), suction s in Pa (s <= 0: S_max).
 KOKKOS_INLINE_FUNCTION Real saturation(const RetentionSpec& spec, Real suction) {
   if (suction <= 0) return spec.saturation_max;
   const Real range = spec.saturation_max - spec.saturation_min;
   switch (spec.model) {
-    case RetentionModel::Linear:  // Eq. 5.6 with S_max in place of 1, clipped at S_min
-      return kmath::fmax(spec.saturation_max - spec.linear_slope * suction, spec.saturation_min);
+    case RetentionModel::Linear:
+      return linearSaturation(spec, suction);
     case RetentionModel::VanGenuchten:  // Eq. 4.28
       return detail::vanGenuchtenSaturation(spec, detail::vanGenuchtenTerms(spec, suction));
     case RetentionModel::Gardner:
@@ -92,9 +106,7 @@ KOKKOS_INLINE_FUNCTION Real saturationSuctionDerivative(const RetentionSpec& spe
   const Real range = spec.saturation_max - spec.saturation_min;
   switch (spec.model) {
     case RetentionModel::Linear:
-      return spec.saturation_max - spec.linear_slope * suction > spec.saturation_min
-                 ? -spec.linear_slope
-                 : 0;
+      return linearSaturationSlope(spec, suction);
     case RetentionModel::VanGenuchten:
       return detail::vanGenuchtenSlope(spec, detail::vanGenuchtenTerms(spec, suction));
     case RetentionModel::Gardner:
@@ -120,17 +132,20 @@ KOKKOS_INLINE_FUNCTION SaturationAndSlope saturationAndSlope(const RetentionSpec
 }
 
 /// S_L at p_L > 0 with occluded air (file comment); S_max when the air is rigid (p_a = 0).
-KOKKOS_INLINE_FUNCTION Real occludedAirSaturation(const RetentionSpec& spec, Real pressure) {
+/// T = Real, or Lanes (each lane the Real form's bits).
+template <class T>
+KOKKOS_INLINE_FUNCTION T occludedAirSaturation(const RetentionSpec& spec, T pressure) {
   const Real air = spec.occluded_air_pressure;
-  if (!(air > 0)) return spec.saturation_max;
+  if (!(air > 0)) return splat<T>(spec.saturation_max);
   return 1 - (1 - spec.saturation_max) * air / (air + pressure);
 }
 
 /// dS_L/ds = -dS_L/dp_L (1/Pa), <= 0, at p_L > 0 with occluded air (0 when rigid).
-KOKKOS_INLINE_FUNCTION Real occludedAirSuctionDerivative(const RetentionSpec& spec, Real pressure) {
+template <class T>
+KOKKOS_INLINE_FUNCTION T occludedAirSuctionDerivative(const RetentionSpec& spec, T pressure) {
   const Real air = spec.occluded_air_pressure;
-  if (!(air > 0)) return 0;
-  const Real absolute = air + pressure;
+  if (!(air > 0)) return splat<T>(0);
+  const T absolute = air + pressure;
   return -(1 - spec.saturation_max) * air / (absolute * absolute);
 }
 
@@ -154,6 +169,19 @@ KOKKOS_INLINE_FUNCTION SaturationAndSlope saturationAndSlopeAtPressure(const Ret
   if (pressure > 0)
     return {occludedAirSaturation(spec, pressure), occludedAirSuctionDerivative(spec, pressure)};
   return saturationAndSlope(spec, -pressure);
+}
+
+/// S_L and dS_L/ds at the liquid pressures of kLanes points on a linear curve
+/// (saturationAndSlopeAtPressure's bits in each lane; the caller checks the model).
+KOKKOS_INLINE_FUNCTION void linearSaturationAndSlopeAtPressure(const RetentionSpec& spec,
+                                                               Lanes pressure, Lanes& saturation,
+                                                               Lanes& slope) {
+  const LaneMask wet = pressure > 0, suction_free = -pressure <= 0;
+  saturation = select(
+      wet, occludedAirSaturation(spec, pressure),
+      select(suction_free, splat<Lanes>(spec.saturation_max), linearSaturation(spec, -pressure)));
+  slope = select(wet, occludedAirSuctionDerivative(spec, pressure),
+                 select(suction_free, splat<Lanes>(0), linearSaturationSlope(spec, -pressure)));
 }
 
 /// Inverse of saturation(): the suction s >= 0 (Pa) at which S_L = `saturation`, used to

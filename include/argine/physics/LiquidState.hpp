@@ -37,9 +37,12 @@ KOKKOS_INLINE_FUNCTION Real suctionOfPressure(Real pressure) {
   return pressure < 0 ? -pressure : 0;
 }
 
-/// rho_L(p_L) = rho_L0 exp(p_L / K_L) (kg/m^3): Eq. 4.13 integrated from rho_L0 at p_L = 0.
-KOKKOS_INLINE_FUNCTION Real liquidDensity(const LiquidSpec& liquid, Real pressure) {
-  return liquid.density * kmath::exp(pressure / liquid.bulk_modulus);
+/// rho_L(p_L) = rho_L0 exp(p_L / K_L) (kg/m^3): Eq. 4.13 integrated from rho_L0 at p_L = 0
+/// (the exponent is small for any soil's pressure: kmath::expNearZero, no library call).
+/// T = Real, or Lanes for kLanes points.
+template <class T>
+KOKKOS_INLINE_FUNCTION T liquidDensity(const LiquidSpec& liquid, T pressure) {
+  return liquid.density * kmath::expNearZero(pressure / liquid.bulk_modulus);
 }
 
 /// Degree of saturation, its suction derivative and the conductivity at one pressure.
@@ -89,9 +92,10 @@ KOKKOS_INLINE_FUNCTION LiquidState liquidState(const PointMaterial& material, Re
 
 /// d(S_L rho_L)/dp_L = rho_L (S_L/K_L - dS_L/ds) (kg/m^3/Pa): the storage of 4.12 per unit
 /// porosity (4.13 for rho_L, the SWRC for S_L, dS_L/dp_L = -dS_L/ds).
-KOKKOS_INLINE_FUNCTION Real liquidContentSlope(Real density, Real saturation,
-                                               Real saturation_suction_derivative,
-                                               Real bulk_modulus) {
+/// T = Real, or Lanes for kLanes points.
+template <class T>
+KOKKOS_INLINE_FUNCTION T liquidContentSlope(T density, T saturation,
+                                            T saturation_suction_derivative, Real bulk_modulus) {
   return density * (saturation / bulk_modulus - saturation_suction_derivative);
 }
 
@@ -148,6 +152,8 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
     const Real s = swrc.saturation;
     const Real rho = liquidDensity(material.liquid, pressure);
     const Real residual = s * rho - content;
+    // the root itself (a zero step would fail the strict bracket test and bisect away from it)
+    if (residual == 0) break;
     if (residual > 0)
       high = pressure;
     else
@@ -170,6 +176,44 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
     if (change <= 1e-14 * bulk) break;
   }
   return pressure;
+}
+
+/// pressureOfLiquidContent of kLanes points of one unsaturated material with a linear
+/// retention curve, all lanes at once: the same iterates in each lane (so the one-point
+/// function's bits) as long as every step is a plain Newton step inside its lane's bracket;
+/// a lane that has converged keeps its pressure while the others go on. Returns false,
+/// `pressure` untouched, where some lane needs more (a content that is not positive, a
+/// step out of the bracket at the kink s = 0 or on the flat S_L = S_min, more than
+/// kLaneIterations iterations): the caller then takes the one-point function lane by lane.
+KOKKOS_INLINE_FUNCTION bool pressureOfLiquidContentLanes(const PointMaterial& material,
+                                                         Lanes content, Lanes guess,
+                                                         Lanes& pressure) {
+  constexpr int kLaneIterations = 8;
+  if (anyLane(~(content > 0))) return false;
+  const Real bulk = material.liquid.bulk_modulus;
+  Lanes current = guess;
+  Lanes low = splat<Lanes>(-kmath::infinity()), high = splat<Lanes>(kmath::infinity());
+  LaneMask done{};  // all lanes still iterating
+  for (int iteration = 0; iteration < kLaneIterations; ++iteration) {
+    Lanes s, swrc_slope;
+    linearSaturationAndSlopeAtPressure(material.retention, current, s, swrc_slope);
+    const Lanes rho = liquidDensity(material.liquid, current);
+    const Lanes residual = s * rho - content;
+    done = either(done, residual == 0);  // at the root: kept, as the one-point loop stops there
+    const LaneMask above = residual > 0;
+    high = select(above, current, high);
+    low = select(above, low, current);
+    const Lanes next = current - residual / liquidContentSlope(rho, s, swrc_slope, bulk);
+    if (anyLane(~done & ~both(next > low, next < high))) return false;
+    const LaneMask converged = kmath::fabs(next - current) <= 1e-14 * bulk;
+    current = select(done, current, next);
+    done = either(done, converged);
+    if (!anyLane(~done)) {
+      pressure = current;
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace argine

@@ -140,17 +140,31 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressure(const PointUpdateViews& v, int 
   v.points.mass_liquid(p) = mass;
 }
 
+/// Whether updateLiquidPressureLanes can take points of this material all at once: a
+/// saturated one (its pressure is the closed-form inverse of 4.13), or an unsaturated one on
+/// a linear retention curve (the Newton iterations of pressureOfLiquidContentLanes) whose
+/// lanes have no air-filled crack open (that storage is the one-point pressureOfPointLiquid's).
+KOKKOS_INLINE_FUNCTION bool takesLanePressureUpdate(const PointUpdateViews& v, int p,
+                                                    const PointMaterial& material) {
+  if (v.hold_liquid_pressure) return false;
+  if (material.phase == PhaseModel::Saturated) return true;
+  return material.phase == PhaseModel::Unsaturated &&
+         material.retention.model == RetentionModel::Linear &&
+         (material.tension_cracks != TensionCracks::AirFilled ||
+          !anyLane(load<Lanes>(v.points.separation, p) > 0));
+}
+
 /// updateLiquidPressure of the kLanes points p .. p + kLanes - 1 of one material: the same
-/// formulas on all lanes at once for a saturated material (its pressure is the closed-form
-/// inverse of 4.13, a logarithm per lane); an unsaturated material (Newton iterations) or a
-/// held pressure takes the one-point update lane by lane. The same bits either way.
+/// formulas on all lanes at once where takesLanePressureUpdate (an unsaturated lane whose
+/// Newton iterations leave the plain path sends all four to the one-point update); otherwise
+/// the one-point update lane by lane. The same bits either way.
 KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v, int p,
                                                       const PointMaterial& material) {
   if (!carriesLiquid(material.phase)) return;
-  if (v.hold_liquid_pressure || material.phase == PhaseModel::Unsaturated) {
+  const auto one_by_one = [&] {
     for (int l = 0; l < kLanes; ++l) updateLiquidPressure(v, p + l);
-    return;
-  }
+  };
+  if (!takesLanePressureUpdate(v, p, material)) return one_by_one();
   Lanes increment[kStressComponents];
   loadComponents(v.rates.strain_increment_p, p, increment);
   const Lanes volumetric = increment[XX] + increment[YY] + increment[ZZ];
@@ -161,8 +175,25 @@ KOKKOS_INLINE_FUNCTION void updateLiquidPressureLanes(const PointUpdateViews& v,
       old_volume, load<Lanes>(v.rates.liquid_divergence_increment_p, p) - volumetric,
       load<Lanes>(v.rates.content_flux_divergence_increment_p, p));
   const Lanes content = mass / (load<Lanes>(v.points.porosity, p) * volume);
-  store(v.points.pressure_liquid, p, saturatedPressureOfContent(material.liquid, content));
-  store(v.points.density_liquid, p, content);  // S_L = 1: the content is the density itself
+  if (material.phase == PhaseModel::Saturated) {
+    store(v.points.pressure_liquid, p, saturatedPressureOfContent(material.liquid, content));
+    store(v.points.density_liquid, p, content);  // S_L = 1: the content is the density itself
+    store(v.points.mass_liquid, p, mass);
+    return;
+  }
+  // unsaturated, linear curve: updateLiquidPressure's predictor and Newton, lanes at once
+  const Lanes pressure = load<Lanes>(v.points.pressure_liquid, p);
+  const Lanes rho = load<Lanes>(v.points.density_liquid, p),
+              s = load<Lanes>(v.points.saturation, p);
+  Lanes unused, ds_ds;
+  linearSaturationAndSlopeAtPressure(material.retention, pressure, unused, ds_ds);
+  const Lanes guess =
+      pressure +
+      (content - s * rho) / liquidContentSlope(rho, s, ds_ds, material.liquid.bulk_modulus);
+  Lanes next;
+  if (!pressureOfLiquidContentLanes(material, content, guess, next)) return one_by_one();
+  store(v.points.pressure_liquid, p, next);
+  store(v.points.density_liquid, p, liquidDensity(material.liquid, next));
   store(v.points.mass_liquid, p, mass);
 }
 

@@ -40,7 +40,8 @@ struct AveragingScratch {
   Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> value_pc;
   /// (element, 2c): sum w q of channel c; (element, 2c + 1): sum w. Empty: nodal only.
   Kokkos::View<Real**, MemSpace> element_sums;
-  /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w.
+  /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w. After averagePointValues
+  /// (node, 2c) holds the node's average, the quotient of the two, at the active nodes.
   Kokkos::View<Real**, MemSpace> node_sums;
   /// Reproducible sums (transfer/CompensatedSum.hpp): the low parts of both sums, shaped as
   /// they are; empty: plain sums.
