@@ -38,11 +38,20 @@ KOKKOS_INLINE_FUNCTION Real suctionOfPressure(Real pressure) {
 }
 
 /// rho_L(p_L) = rho_L0 exp(p_L / K_L) (kg/m^3): Eq. 4.13 integrated from rho_L0 at p_L = 0
-/// (the exponent is small for any soil's pressure: kmath::expNearZero, no library call).
-/// T = Real, or Lanes for kLanes points.
+/// (the exponent is small for any soil's pressure: kmath::expNearZero, no library call), of
+/// one point (Real) or kLanes points (Lanes); not a template, so that an integer pressure
+/// converts to Real.
+namespace detail {
 template <class T>
 KOKKOS_INLINE_FUNCTION T liquidDensity(const LiquidSpec& liquid, T pressure) {
   return liquid.density * kmath::expNearZero(pressure / liquid.bulk_modulus);
+}
+}  // namespace detail
+KOKKOS_INLINE_FUNCTION Real liquidDensity(const LiquidSpec& liquid, Real pressure) {
+  return detail::liquidDensity(liquid, pressure);
+}
+KOKKOS_INLINE_FUNCTION Lanes liquidDensity(const LiquidSpec& liquid, Lanes pressure) {
+  return detail::liquidDensity(liquid, pressure);
 }
 
 /// Degree of saturation, its suction derivative and the conductivity at one pressure.
