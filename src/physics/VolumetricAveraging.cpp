@@ -21,14 +21,22 @@ static_assert(kNone == kAverageNone && kNodal == kAverageNodal &&
 VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
                                          NodalExchange* exchange)
     : exchange_(exchange) {
+  // Element sums only where some material averages over its elements: a mesh's worth of
+  // them is zeroed at every call, for nothing when all averaging is nodal.
+  bool strain_elements = false, pressure_elements = false;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
-    strain_ = strain_ || material.locking.volumetric_strain != IncrementAveraging::None;
-    pressure_ = pressure_ || (material.phase == PhaseModel::Saturated &&
-                              material.locking.liquid_pressure != IncrementAveraging::None);
+    const IncrementAveraging strain = material.locking.volumetric_strain;
+    const IncrementAveraging pressure = material.phase == PhaseModel::Saturated
+                                            ? material.locking.liquid_pressure
+                                            : IncrementAveraging::None;
+    strain_ = strain_ || strain != IncrementAveraging::None;
+    pressure_ = pressure_ || pressure != IncrementAveraging::None;
+    strain_elements = strain_elements || strain == IncrementAveraging::Element;
+    pressure_elements = pressure_elements || pressure == IncrementAveraging::Element;
   }
-  if (strain_) increments_.allocateSums(kChannels, elements, nodes);
-  if (pressure_) pressure_increments_.allocateSums(1, elements, nodes);
+  if (strain_) increments_.allocateSums(kChannels, strain_elements ? elements : 0, nodes);
+  if (pressure_) pressure_increments_.allocateSums(1, pressure_elements ? elements : 0, nodes);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,

@@ -30,6 +30,8 @@
 /// are the neighbouring planes of the sextant (sigma_1, sigma_2 or sigma_2, sigma_3
 /// swapped).
 
+#include <type_traits>
+
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/LinearElastic.hpp"
@@ -132,8 +134,10 @@ KOKKOS_INLINE_FUNCTION void applyStiffness(Real lambda, Real two_g, const Real v
 }
 
 /// Solves the n x n system A x = y (n <= 3) by Gaussian elimination with partial pivoting;
-/// false when singular (relative pivot below 1e-12).
-KOKKOS_INLINE_FUNCTION bool solveSmall(int n, Real A[3][3], Real y[3], Real x[3]) {
+/// false when singular (relative pivot below 1e-12). n is a template parameter so that each
+/// size's loops unroll (the return is most of a plastic point's cost).
+template <int n>
+KOKKOS_INLINE_FUNCTION bool solveSmall(Real A[3][3], Real y[3], Real x[3]) {
   Real scale = 0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) scale = kmath::fmax(scale, kmath::fabs(A[i][j]));
@@ -169,7 +173,8 @@ KOKKOS_INLINE_FUNCTION bool solveSmall(int n, Real A[3][3], Real y[3], Real x[3]
 
 /// Tries the return to the active set `ids` (n planes); on success (multipliers >= 0, F1
 /// and, with the cut-off, T1 satisfied, order kept) writes the returned stress to `out`.
-KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n, const int ids[3],
+template <int n>
+KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], const int ids[3],
                                          Real lambda, Real two_g, bool cutoff, Real tolerance,
                                          const Real trial[3], Real out[3]) {
   Real Db[3][3];  // D b_j of the active planes
@@ -181,7 +186,7 @@ KOKKOS_INLINE_FUNCTION bool tryActiveSet(const Plane planes[kPlaneCount], int n,
     for (int j = 0; j < n; ++j)
       A[i][j] = plane.a[0] * Db[j][0] + plane.a[1] * Db[j][1] + plane.a[2] * Db[j][2];
   }
-  if (!solveSmall(n, A, y, x)) return false;
+  if (!solveSmall<n>(A, y, x)) return false;
   // Kuhn-Tucker: dlambda_j >= 0, measured as a stress (dlambda (lambda + 2G)).
   for (int j = 0; j < n; ++j)
     if (x[j] * (lambda + two_g) < -tolerance) return false;
@@ -263,7 +268,13 @@ KOKKOS_INLINE_FUNCTION int returnToMohrCoulomb(const MohrCoulombStrength& streng
   for (int s = 0; s < last && !found; ++s) {
     int n = 0;
     while (n < 3 && sets[s][n] >= 0) ++n;
-    found = tryActiveSet(planes, n, sets[s], lambda, two_g, cutoff, tolerance, trial, out);
+    const auto tryIt = [&](auto size) {
+      return tryActiveSet<decltype(size)::value>(planes, sets[s], lambda, two_g, cutoff, tolerance,
+                                                 trial, out);
+    };
+    found = n == 1   ? tryIt(std::integral_constant<int, 1>{})
+            : n == 2 ? tryIt(std::integral_constant<int, 2>{})
+                     : tryIt(std::integral_constant<int, 3>{});
     if (found && s >= 3) region = kMohrCoulombTension;  // the sets with a cut-off plane
     if (found && n == 3 && sets[s][0] == kT1 && sets[s][2] == kT3) region = kMohrCoulombApex;
   }
