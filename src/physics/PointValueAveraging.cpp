@@ -163,8 +163,9 @@ void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
   const int columns = 2 * scratch.channels();
   const auto element_sums = scratch.element_sums, node_sums = scratch.node_sums;
   Kokkos::deep_copy(element_sums, 0.0);
+  const bool nodal = scratch.nodal();  // else no point adds to a node: no node work at all
   Kokkos::parallel_for(
-      "averaging_zero_nodes", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      "averaging_zero_nodes", Kokkos::RangePolicy<ExecSpace>(0, nodal ? active.count() : 0),
       KOKKOS_LAMBDA(const int j) {
         for (int k = 0; k < columns; ++k) node_sums(active_nodes(j), k) = 0;
       });
@@ -179,15 +180,16 @@ void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
   });
   // Several ranks: a node shared with another rank also has that rank's points in its sums.
   // `active` includes the shared nodes, so every rank sends freshly zeroed partial sums.
+  // (Every rank has the same materials, so all take the same branch of the collectives.)
   if (scratch.compensated()) {
-    if (exchange) {
+    if (exchange && nodal) {
       std::vector<NodalFieldRef> lo;
       for (int k = 0; k < kLowParts; ++k) lo.push_back(nodalField(scratch.node_lo[k]));
       exchange->sumCompensated({nodalField(node_sums)}, lo);
     }
-    foldCompensatedSums(active, node_sums, scratch.node_lo);
+    if (nodal) foldCompensatedSums(active, node_sums, scratch.node_lo);
     foldCompensatedSums(element_sums, scratch.element_lo);
-  } else if (exchange) {
+  } else if (exchange && nodal) {
     exchange->sum({nodalField(node_sums)});
   }
 }
@@ -196,7 +198,7 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
                         const ActiveNodes& active, AveragingScratch& scratch,
                         NodalExchange* exchange) {
   sumPointValues(points, shapes, active, scratch, exchange);
-  divideNodeSums(active, scratch);
+  if (scratch.nodal()) divideNodeSums(active, scratch);
   withShapeFamily(shapes, [&](auto family) {
     withChannelCount(scratch.channels(), [&](auto n) {
       gatherAverages<decltype(family), decltype(n)::value>(points, shapes, scratch);

@@ -21,9 +21,10 @@ static_assert(kNone == kAverageNone && kNodal == kAverageNodal &&
 VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
                                          NodalExchange* exchange)
     : exchange_(exchange) {
-  // Element sums only where some material averages over its elements: a mesh's worth of
-  // them is zeroed at every call, for nothing when all averaging is nodal.
-  bool strain_elements = false, pressure_elements = false;
+  // Element sums only where some material averages over its elements (a mesh's worth of
+  // them is zeroed at every call), node sums only where some averages over nodes.
+  bool strain_elements = false, pressure_elements = false, strain_nodes = false,
+       pressure_nodes = false;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
     const IncrementAveraging strain = material.locking.volumetric_strain;
@@ -34,9 +35,14 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
     pressure_ = pressure_ || pressure != IncrementAveraging::None;
     strain_elements = strain_elements || strain == IncrementAveraging::Element;
     pressure_elements = pressure_elements || pressure == IncrementAveraging::Element;
+    strain_nodes = strain_nodes || strain == IncrementAveraging::Nodal;
+    pressure_nodes = pressure_nodes || pressure == IncrementAveraging::Nodal;
   }
-  if (strain_) increments_.allocateSums(kChannels, strain_elements ? elements : 0, nodes);
-  if (pressure_) pressure_increments_.allocateSums(1, pressure_elements ? elements : 0, nodes);
+  if (strain_)
+    increments_.allocateSums(kChannels, strain_elements ? elements : 0, strain_nodes ? nodes : 0);
+  if (pressure_)
+    pressure_increments_.allocateSums(1, pressure_elements ? elements : 0,
+                                      pressure_nodes ? nodes : 0);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,

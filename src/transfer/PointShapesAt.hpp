@@ -62,8 +62,9 @@ struct PointShapesAt<Lanes> {
     for (int l = 0; l < kLanes; ++l) out[l] = shape[l]->gradient[a][d];
     return out;
   }
+  // forced: not inlined, the call re-reads the lanes' node indices for every slot
   template <class Values>
-  KOKKOS_INLINE_FUNCTION Lanes nodal(const Values& values_i, int a, int slot) const {
+  KOKKOS_FORCEINLINE_FUNCTION Lanes nodal(const Values& values_i, int a, int slot) const {
     if (one_element) return splat<Lanes>(values_i(shape[0]->node[a], slot));
     Lanes out;
     for (int l = 0; l < kLanes; ++l) out[l] = values_i(shape[l]->node[a], slot);

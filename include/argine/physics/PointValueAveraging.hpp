@@ -48,14 +48,16 @@ struct AveragingScratch {
   LowParts<Kokkos::View<Real**, MemSpace>> element_lo, node_lo;
 
   /// Sums of `channels` quantities over `elements` elements (0 when only nodal averaging is
-  /// used) and `nodes` nodes.
+  /// used) and `nodes` nodes (0 when only element averaging is used).
   void allocateSums(int channels, int elements, int nodes);
   /// The per-point views for `points` points (kept when the count is unchanged).
   void fitPoints(int points);
   /// Allocates (on) or empties (off) the low parts.
   void compensate(bool on);
   int channels() const { return static_cast<int>(node_sums.extent(1)) / 2; }
-  bool compensated() const { return node_lo[0].extent(0) > 0; }
+  bool compensated() const { return node_lo[0].extent(0) > 0 || element_lo[0].extent(0) > 0; }
+  /// Whether some channel may average over nodes (the node sums have rows).
+  bool nodal() const { return node_sums.extent(0) > 0; }
 };
 
 /// The element and node sums of every channel (element_sums, node_sums), complete over the
