@@ -16,19 +16,14 @@ static_assert(static_cast<int>(IncrementAveraging::Element) == kAverageElement &
 IntraElementSeepage::IntraElementSeepage(const MaterialTable& table, int elements, int nodes,
                                          NodalExchange* exchange)
     : exchange_(exchange) {
-  // Element sums only where some material's patch is the element (a mesh's worth of them is
-  // zeroed at every call), node sums only where some patch is nodal (as VolumetricAveraging).
-  bool element_patch = false, nodal_patch = false;
+  AveragingUse patch;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
-    const bool seeps = carriesLiquid(material.phase) && material.locking.intra_element_seepage;
-    active_ = active_ || seeps;
-    element_patch =
-        element_patch || (seeps && material.locking.seepage_patch == IncrementAveraging::Element);
-    nodal_patch =
-        nodal_patch || (seeps && material.locking.seepage_patch == IncrementAveraging::Nodal);
+    if (!carriesLiquid(material.phase) || !material.locking.intra_element_seepage) continue;
+    active_ = true;
+    patch.add(static_cast<int>(material.locking.seepage_patch));
   }
-  if (active_) heads_.allocateSums(1, element_patch ? elements : 0, nodal_patch ? nodes : 0);
+  if (active_) heads_.allocateSums(1, patch, elements, nodes);
 }
 
 void IntraElementSeepage::apply(const MaterialTable& table, const MaterialPoints& points,

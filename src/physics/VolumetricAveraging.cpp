@@ -21,28 +21,18 @@ static_assert(kNone == kAverageNone && kNodal == kAverageNodal &&
 VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
                                          NodalExchange* exchange)
     : exchange_(exchange) {
-  // Element sums only where some material averages over its elements (a mesh's worth of
-  // them is zeroed at every call), node sums only where some averages over nodes.
-  bool strain_elements = false, pressure_elements = false, strain_nodes = false,
-       pressure_nodes = false;
+  AveragingUse strain, pressure;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
-    const IncrementAveraging strain = material.locking.volumetric_strain;
-    const IncrementAveraging pressure = material.phase == PhaseModel::Saturated
-                                            ? material.locking.liquid_pressure
-                                            : IncrementAveraging::None;
-    strain_ = strain_ || strain != IncrementAveraging::None;
-    pressure_ = pressure_ || pressure != IncrementAveraging::None;
-    strain_elements = strain_elements || strain == IncrementAveraging::Element;
-    pressure_elements = pressure_elements || pressure == IncrementAveraging::Element;
-    strain_nodes = strain_nodes || strain == IncrementAveraging::Nodal;
-    pressure_nodes = pressure_nodes || pressure == IncrementAveraging::Nodal;
+    strain.add(static_cast<int>(material.locking.volumetric_strain));
+    pressure.add(material.phase == PhaseModel::Saturated
+                     ? static_cast<int>(material.locking.liquid_pressure)
+                     : kNone);
   }
-  if (strain_)
-    increments_.allocateSums(kChannels, strain_elements ? elements : 0, strain_nodes ? nodes : 0);
-  if (pressure_)
-    pressure_increments_.allocateSums(1, pressure_elements ? elements : 0,
-                                      pressure_nodes ? nodes : 0);
+  strain_ = strain.any();
+  pressure_ = pressure.any();
+  if (strain_) increments_.allocateSums(kChannels, strain, elements, nodes);
+  if (pressure_) pressure_increments_.allocateSums(1, pressure, elements, nodes);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,

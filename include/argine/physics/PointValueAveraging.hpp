@@ -30,6 +30,17 @@ constexpr int kAverageNone = 0;
 constexpr int kAverageElement = 1;
 constexpr int kAverageNodal = 2;
 
+/// Which averages some point may ask for, gathered over the materials (kAverage* modes), so
+/// that AveragingScratch::allocateSums sizes only the sums that are read.
+struct AveragingUse {
+  bool elements = false, nodes = false;
+  void add(int mode) {
+    elements = elements || mode == kAverageElement;
+    nodes = nodes || mode == kAverageNodal;
+  }
+  bool any() const { return elements || nodes; }
+};
+
 /// The inputs, outputs and sums of averagePointValues for `channels()` quantities.
 struct AveragingScratch {
   /// (point, channel): kAverage* of the point in that channel.
@@ -50,6 +61,11 @@ struct AveragingScratch {
   /// Sums of `channels` quantities over `elements` elements (0 when only nodal averaging is
   /// used) and `nodes` nodes (0 when only element averaging is used).
   void allocateSums(int channels, int elements, int nodes);
+  /// The same with rows only for the averages in `use` (a mesh's worth of element sums is
+  /// zeroed at every call, and node sums are zeroed, exchanged and divided).
+  void allocateSums(int channels, const AveragingUse& use, int elements, int nodes) {
+    allocateSums(channels, use.elements ? elements : 0, use.nodes ? nodes : 0);
+  }
   /// The per-point views for `points` points (kept when the count is unchanged).
   void fitPoints(int points);
   /// Allocates (on) or empties (off) the low parts.
