@@ -98,6 +98,7 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   element_seepage_ =
       IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
   setReproducibleSums(reproducible_sums_);  // the new scratch compensated as the old
+  held_liquid_state_renewed_ = false;
   // New retention or conductivity parameters: S_L and k of every liquid-carrying point.
   const auto materials_m = table_.materials();
   const MaterialPoints pts = points_;
@@ -136,6 +137,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   momentum_.liquid_with_solid = stage.hold_liquid_pressure;
+  held_liquid_state_renewed_ = false;
   momentum_.implicit_drag = stage.implicit_drag;
   gravity_ = stage.gravity;
   time_step_.configure(stage.time_step, stage.mass_scaling, stage.name, stage.implicit_drag);
@@ -571,8 +573,10 @@ void ExplicitTwoPhaseSolver::updatePointStates() {
     detectFreeBoundary();
     air_path_.update(free_boundary_, points_, ranks_ ? ranks_->comm() : MPI_COMM_NULL);
   }
-  totals_ = argine::updatePointStates(table_, rates_, points_, momentum_.liquid_with_solid,
-                                      air_path_.reachesElement());
+  const bool held = momentum_.liquid_with_solid;
+  totals_ = argine::updatePointStates(table_, rates_, points_, held, air_path_.reachesElement(),
+                                      !(held && held_liquid_state_renewed_));
+  held_liquid_state_renewed_ = held;
   if (reproducible_sums_) {  // the liquid mass of the step, compensated (same terms)
     liquid_mass_pair_ = compensatedSum(points_.mass_liquid);
     totals_.liquid_mass = liquid_mass_pair_.value();

@@ -68,10 +68,11 @@ struct PointStateUpdate {
 
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
                               MaterialPoints& points, bool hold_liquid_pressure,
-                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e) {
+                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e,
+                              bool renew_liquid_state) {
   PointStateUpdate kernel;
-  kernel.v =
-      PointUpdateViews{table.materials(), points, rates, hold_liquid_pressure, air_reaches_e};
+  kernel.v = PointUpdateViews{table.materials(),    points,        rates,
+                              hold_liquid_pressure, air_reaches_e, renew_liquid_state};
   kernel.count = points.count;
   Real sums[2] = {0, 0};
   const int chunks = (points.count + kLanes - 1) / kLanes;

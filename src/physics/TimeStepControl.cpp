@@ -165,6 +165,9 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
     any_dry = any_dry || !carriesLiquid(table.host(m).phase);
     any_wet = any_wet || carriesLiquid(table.host(m).phase);
   }
+  // the SWRC slope only where a criterion of the stage reads it (0 is never read otherwise)
+  bool slope_read = false;
+  for (const CriterionKind kind : criteria_) slope_read = slope_read || readsSaturationSlope(kind);
   if (static_cast<int>(gathered_p_.extent(0)) != points.count) {
     gathered_p_ = Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace>(
         "criterion_inputs_p", points.count);
@@ -187,7 +190,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         // precomputed per material: one division less
         gathered_p(p, kGatheredConstrainedModulus) = material.constrained_modulus;
         gathered_p(p, kGatheredSaturationSlope) =
-            material.phase == PhaseModel::Unsaturated
+            slope_read && material.phase == PhaseModel::Unsaturated
                 ? saturationSuctionDerivativeAtPressure(material.retention, pts.pressure_liquid(p))
                 : 0;
         const Real held_to = e < 0                           ? kHeldToNone

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "Harness.hpp"
+#include "argine/physics/LiquidState.hpp"
+#include "argine/physics/MaterialTable.hpp"
 
 namespace argine {
 namespace {
@@ -189,6 +191,59 @@ TEST(Consolidation, HeldLiquidPressureGivesTheDrainedResponse) {
   }
   std::printf("[ held ] top points settled %.6e m (drained hand value 1e-3 m at y = 1)\n",
               -top_settlement);
+}
+
+TEST(Consolidation, HeldLiquidPressureKeepsTheRetentionCurvesValuesAtItsPressure) {
+  // A held stage renews S_L and k from the held p_L once, after its first step, and then
+  // skips the curves (their values could not change). An unsaturated column on van Genuchten
+  // and Mualem (lambda 0.75: the library's pow), suction 0-10 kPa growing upwards, whose
+  // stored S_L and k are stale when the stage begins (0.3 and 1e-9 m/s everywhere): after
+  // the first step and after 200 damped steps under gravity, every point holds exactly (to
+  // the bit) the curves' values at its p_L, and p_L is the one it started with.
+  MaterialSpec silt = test::elasticMaterial("silt", PhaseModel::Unsaturated, 1e7, 0.3, 0.4);
+  silt.retention.model = RetentionModel::VanGenuchten;
+  silt.retention.reference_pressure = 19000;
+  silt.retention.lambda = 0.75;
+  silt.retention.saturation_min = 0.16;
+  silt.retention.saturation_max = 0.8;
+  silt.conductivity.model = ConductivityModel::Mualem;
+  silt.conductivity.mualem_lambda = 0.75;
+  silt.conductivity.saturated_conductivity = 5.3e-6;
+  test::Column column(10, 0.1, 1.0, silt);
+  ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+  StageSpec stage = makeStage("drained", SolverKind::QuasiStatic, 9.81, 0.7,
+                              test::columnBoundaries(), {CriterionKind::CflDry});
+  stage.hold_liquid_pressure = true;
+  solver.beginStage(stage);
+  const auto y0 = hostCopy(column.points.initial_position);
+  auto pressure = hostCopy(column.points.pressure_liquid);
+  auto saturation = hostCopy(column.points.saturation);
+  auto conductivity = hostCopy(column.points.conductivity);
+  for (int p = 0; p < column.points.count; ++p) {
+    pressure(p) = -1e4 * y0(p, 1);
+    saturation(p) = 0.3;
+    conductivity(p) = 1e-9;
+  }
+  Kokkos::deep_copy(column.points.pressure_liquid, pressure);
+  Kokkos::deep_copy(column.points.saturation, saturation);
+  Kokkos::deep_copy(column.points.conductivity, conductivity);
+  const PointMaterial material = MaterialTable(column.materials).host(0);
+  const auto expectCurvesAtHeldPressure = [&](const char* when) {
+    const auto y = hostCopy(column.points.initial_position);
+    const auto p_l = hostCopy(column.points.pressure_liquid);
+    const auto s_l = hostCopy(column.points.saturation);
+    const auto k = hostCopy(column.points.conductivity);
+    for (int p = 0; p < column.points.count; ++p) {
+      EXPECT_EQ(p_l(p), -1e4 * y(p, 1)) << when << ", point " << p;
+      const LiquidState state = saturationAndConductivity(material, p_l(p));
+      EXPECT_EQ(s_l(p), state.saturation) << when << ", point " << p;
+      EXPECT_EQ(k(p), state.conductivity) << when << ", point " << p;
+    }
+  };
+  solver.step(solver.chooseTimeStep().time_step);
+  expectCurvesAtHeldPressure("after the first step");
+  for (int k = 0; k < 200; ++k) solver.step(solver.chooseTimeStep().time_step);
+  expectCurvesAtHeldPressure("after 201 steps");
 }
 
 TEST(Consolidation, DeformingClosedColumnKeepsItsLiquidMassToQuadrature) {

@@ -47,6 +47,17 @@ void expectRel(Real actual, Real expected, Real rel = 1e-8) {
   EXPECT_NEAR(actual, expected, rel * std::abs(expected));
 }
 
+// readsSaturationSlope tells TimeStepControl which criteria it may leave without the SWRC
+// slope: exactly those whose step does not change when only dS_L/ds changes.
+TEST(Criteria, ReadsSaturationSlopeExactlyWhereTheStepDependsOnIt) {
+  const CriterionInput in = unsaturatedPoint();
+  CriterionInput flat = in;
+  flat.saturation_suction_derivative = 0;
+  for (CriterionKind kind : kAllCriteria)
+    EXPECT_EQ(criticalStep(kind, in) != criticalStep(kind, flat), readsSaturationSlope(kind))
+        << criterionName(kind);
+}
+
 TEST(Criteria, NamesAreDistinctAndDispatchMatches) {
   std::set<std::string> names;
   const CriterionInput in = unsaturatedPoint();

@@ -364,6 +364,11 @@ class ExplicitTwoPhaseSolver {
   IntraElementSeepage element_seepage_;         ///< p_L differences inside an element (P11)
   LiquidOutflowLimit outflow_limit_;            ///< donor limit of the mass balance at dry points
   int outflow_limited_ = 0;                     ///< points it capped in this step
+  /// In a stage with `Liquid Pressure: held`: S_L and k have been renewed from the held p_L
+  /// (after the stage's first step). No step of such a stage changes an unsaturated point's
+  /// p_L, so the retention and conductivity curves (two to four pow calls a point) would
+  /// give the same values again; beginStage, setMaterials and a restart clear it.
+  bool held_liquid_state_renewed_ = false;
   TimeStepControl time_step_;
   MomentumSettings momentum_;
   TransferSettings transfer_;  ///< FLIP (with its PIC shares) or APIC (stage keys)

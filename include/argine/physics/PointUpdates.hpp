@@ -27,6 +27,9 @@ struct PointUpdateViews {
   /// 1 where air reaches the element (AirPath.hpp), by element: an air-filled crack opens
   /// only there. Empty: anywhere (a single point's updates, with no mesh around it).
   Kokkos::View<const unsigned char*, MemSpace> air_reaches_e;
+  /// Step 6 evaluates S_L and k at the new p_L; false where they are known to be those of the
+  /// unchanged p_L already (a held stage after its first step): the same values, skipped.
+  bool renew_liquid_state = true;
 };
 
 /// Whether air reaches point p for an air-filled crack (PointUpdateViews::air_reaches_e).
@@ -321,6 +324,7 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStress(const PointUpdateViews& v, int
 /// Step 6, state variables: S_L and k from the SWRC/HCC at the new pressure (unsaturated) or
 /// 1 and k_sat (saturated). M_L (4.47) is carried by updateLiquidPressure.
 KOKKOS_INLINE_FUNCTION void updateLiquidState(const PointUpdateViews& v, int p) {
+  if (!v.renew_liquid_state) return;
   const PointMaterial& material = v.materials_m(v.points.material(p));
   if (material.phase != PhaseModel::Unsaturated) return;  // dry: none; saturated: constant
   const LiquidState state = saturationAndConductivity(material, v.points.pressure_liquid(p));
@@ -400,9 +404,11 @@ KOKKOS_INLINE_FUNCTION void updateEffectiveStressLanes(const PointUpdateViews& v
 /// Runs, for every located point and in this order: closeSeparation, updatePorosityAndVolume,
 /// updateLiquidPressure, updateEffectiveStress, updateLiquidState, updatePointPosition, in
 /// one pass; returns the liquid mass and the number of points whose new state is invalid
-/// (pointStateIsValid); the kinetic energies are left 0 (the G2P sums them).
+/// (pointStateIsValid); the kinetic energies are left 0 (the G2P sums them). Without
+/// `renew_liquid_state` updateLiquidState is skipped (PointUpdateViews).
 PointTotals updatePointStates(const MaterialTable& table, const PointRates& rates,
                               MaterialPoints& points, bool hold_liquid_pressure = false,
-                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e = {});
+                              Kokkos::View<const unsigned char*, MemSpace> air_reaches_e = {},
+                              bool renew_liquid_state = true);
 
 }  // namespace argine

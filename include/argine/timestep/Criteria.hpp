@@ -254,6 +254,15 @@ KOKKOS_INLINE_FUNCTION Real criticalStepMieremetLiquidDrag(const CriterionInput&
   return mieremetStep(in, mieremetDragTerm(in));
 }
 
+/// Whether criterion `kind` reads the retention storage |dS_L/ds| (through K_e or the
+/// infiltration's diffusivity): the CFL criteria and consolidation do not, so a stage that
+/// uses only those needs no SWRC slope at the points (two pow calls a point for van
+/// Genuchten, TimeStepControl).
+inline constexpr bool readsSaturationSlope(CriterionKind kind) {
+  return kind != CriterionKind::CflDry && kind != CriterionKind::CflUndrained &&
+         kind != CriterionKind::Consolidation;
+}
+
 /// The critical step of one criterion (s).
 KOKKOS_INLINE_FUNCTION Real criticalStep(CriterionKind kind, const CriterionInput& in) {
   switch (kind) {
