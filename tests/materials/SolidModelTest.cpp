@@ -1,6 +1,7 @@
 // Solid model dispatch and the suction-dependent strength parameters (Eqs. 4.23-4.26).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "argine/materials/SolidModel.hpp"
@@ -45,6 +46,48 @@ TEST(SuctionStrength, ContinuousAtZeroSuction) {
   const SolidSpec spec = suctionSolid();
   EXPECT_NEAR(suctionDependentCohesion(spec, 1e-6), spec.cohesion, 1e-6);
   EXPECT_NEAR(suctionDependentFriction(spec, 1e-6), spec.friction_angle, 1e-12);
+}
+
+// A = 0 (the thesis' Table 5.4): the update takes k and m from the material's constants and
+// only the cohesion at the point's suction. The stress, plastic strain and state must be
+// those of the factors derived at the point (two sines), to the bit, on elastic, plane, edge,
+// apex and cut-off returns, with and without a strength reduction.
+TEST(SolidModel, ConstantSuctionAnglesGiveTheBitsOfTheFactorsAtThePoint) {
+  for (const Real reduction : {1.0, 1.3}) {
+    SolidSpec spec = suctionSolid();
+    spec.friction_suction_rate = 0;
+    spec.dilatancy_angle = 0.2;
+    spec.tension_cutoff = true;
+    spec.tensile_strength = 2000;
+    spec.strength_reduction = reduction;
+    const SolidConstants constants = solidConstants(spec);
+    ASSERT_TRUE(constantSuctionAngles(spec));
+    const Real increments[][kStressComponents] = {{1e-5, -2e-5, 0, 3e-6},   // elastic
+                                                  {-3e-3, 1e-3, 0, 2e-3},   // a plane
+                                                  {2e-3, -2e-3, 0, 0},      // an edge
+                                                  {4e-3, 4e-3, 0, 0},       // the apex
+                                                  {3e-3, -1e-4, 0, 1e-4}};  // the cut-off
+    int returns[4] = {0, 0, 0, 0};
+    for (const Real suction : {0.0, 2e3, 3e4, 2e5})
+      for (const auto& dstrain : increments) {
+        Real fast[kStressComponents] = {-2e4, -3e4, -2.5e4, 1e3}, slow[kStressComponents];
+        std::copy(fast, fast + kStressComponents, slow);
+        Real fast_plastic = 0, slow_plastic = 0;
+        int fast_state = 0, slow_state = 0;
+        updateEffectiveStress(spec, constants, suction, dstrain, fast, fast_plastic, fast_state);
+        const MohrCoulombStrength strength = mohrCoulombStrength(spec, suction);
+        slow_state =
+            mohrCoulombStressUpdate(constants.lambda, constants.shear_modulus, strength,
+                                    mohrCoulombFactors(strength), dstrain, slow, slow_plastic);
+        for (int c = 0; c < kStressComponents; ++c) EXPECT_EQ(fast[c], slow[c]) << suction;
+        EXPECT_EQ(fast_plastic, slow_plastic);
+        EXPECT_EQ(fast_state, slow_state);
+        returns[slow_state] += 1;
+      }
+    EXPECT_GT(returns[kPlasticStateElastic], 0);
+    EXPECT_GT(returns[kPlasticStatePlastic], 0);
+    EXPECT_GT(returns[kPlasticStateApex] + returns[kPlasticStateTension], 0);
+  }
 }
 
 TEST(SolidModel, ImplementedModels) {

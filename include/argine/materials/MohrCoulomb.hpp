@@ -87,13 +87,20 @@ struct MohrCoulombFactors {
   Real apex = kmath::infinity();  ///< sigma_a = sigma_c / (k - 1), +infinity for k <= 1 (Pa)
 };
 
-KOKKOS_INLINE_FUNCTION MohrCoulombFactors mohrCoulombFactors(const MohrCoulombStrength& s) {
+/// The factors of strength `s` whose flow factors k = N_phi and m = N_psi are known already
+/// (those of s's angles: a suction-dependent cohesion with constant angles, SolidModel.hpp).
+KOKKOS_INLINE_FUNCTION MohrCoulombFactors mohrCoulombFactors(const MohrCoulombStrength& s, Real k,
+                                                             Real m) {
   MohrCoulombFactors f;
-  f.k = flowFactor(s.friction_angle);
-  f.m = flowFactor(s.dilatancy_angle);
+  f.k = k;
+  f.m = m;
   f.sigma_c = 2 * s.cohesion * kmath::sqrt(f.k);
   f.apex = f.k <= 1 ? kmath::infinity() : f.sigma_c / (f.k - 1);
   return f;
+}
+
+KOKKOS_INLINE_FUNCTION MohrCoulombFactors mohrCoulombFactors(const MohrCoulombStrength& s) {
+  return mohrCoulombFactors(s, flowFactor(s.friction_angle), flowFactor(s.dilatancy_angle));
 }
 
 namespace mc_detail {

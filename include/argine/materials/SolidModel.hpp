@@ -93,19 +93,29 @@ KOKKOS_INLINE_FUNCTION MohrCoulombStrength mohrCoulombStrength(const SolidSpec& 
 /// What a material's stress update derives from its SolidSpec alone, derived once per
 /// material (physics/MaterialTable) instead of at every point, by the same expressions (so
 /// the same values to the bit): lambda and G, and for MohrCoulomb, whose strength does not
-/// depend on suction, the strength and its return-mapping factors.
+/// depend on suction, the strength and its return-mapping factors. SuctionMohrCoulomb with
+/// A = 0 (Friction Suction Rate A, Eq. 4.24: phi = phi' at every suction, as the thesis'
+/// Table 5.4) keeps its angles at every suction, so the factors' k and m (two sines, most of
+/// such a point's cost) are those at s = 0; only the cohesion, and with it sigma_c and the
+/// apex, is taken at the point's suction.
 struct SolidConstants {
   Real lambda = 0;               ///< Lame's lambda (Pa)
   Real shear_modulus = 0;        ///< G (Pa)
-  MohrCoulombStrength strength;  ///< MohrCoulomb only: mohrCoulombStrength(spec, 0)
-  MohrCoulombFactors factors;    ///< MohrCoulomb only: mohrCoulombFactors(strength)
+  MohrCoulombStrength strength;  ///< MohrCoulomb (and constantSuctionAngles): at s = 0
+  MohrCoulombFactors factors;    ///< the same: mohrCoulombFactors(strength)
 };
+
+/// Whether a SuctionMohrCoulomb spec keeps its friction and dilatancy angles at every
+/// suction (A = 0): phi(s) = phi' + 0 s / p_atm = phi', to the bit.
+KOKKOS_INLINE_FUNCTION bool constantSuctionAngles(const SolidSpec& spec) {
+  return spec.model == SolidModel::SuctionMohrCoulomb && spec.friction_suction_rate == 0;
+}
 
 KOKKOS_INLINE_FUNCTION SolidConstants solidConstants(const SolidSpec& spec) {
   SolidConstants constants;
   constants.lambda = lameLambda(spec);
   constants.shear_modulus = shearModulus(spec);
-  if (spec.model == SolidModel::MohrCoulomb) {
+  if (spec.model == SolidModel::MohrCoulomb || constantSuctionAngles(spec)) {
     constants.strength = mohrCoulombStrength(spec, 0);
     constants.factors = mohrCoulombFactors(constants.strength);
   }
@@ -138,9 +148,12 @@ KOKKOS_INLINE_FUNCTION bool updateEffectiveStress(const SolidSpec& spec,
       return true;
     case SolidModel::SuctionMohrCoulomb: {
       const MohrCoulombStrength strength = mohrCoulombStrength(spec, suction);
-      plastic_state =
-          mohrCoulombStressUpdate(constants.lambda, constants.shear_modulus, strength,
-                                  mohrCoulombFactors(strength), dstrain, stress, plastic_strain);
+      const MohrCoulombFactors factors =
+          constantSuctionAngles(spec)
+              ? mohrCoulombFactors(strength, constants.factors.k, constants.factors.m)
+              : mohrCoulombFactors(strength);
+      plastic_state = mohrCoulombStressUpdate(constants.lambda, constants.shear_modulus, strength,
+                                              factors, dstrain, stress, plastic_strain);
       return true;
     }
   }
