@@ -22,10 +22,35 @@ Real drivingSum(const std::vector<Slice>& slices, Real sign, Real external_drivi
   return driving;
 }
 
+/// m_alpha = cos(alpha) (1 + tan(alpha) tan(phi') / F) from the three functions' values.
+Real mAlpha(Real cos_alpha, Real tan_alpha, Real tan_phi, Real factor) {
+  return cos_alpha * (1 + tan_alpha * tan_phi / factor);
+}
+
+/// What Bishop's iteration reads of one slice and does not change with F: the cosine and
+/// tangent of its (mirrored) base angle, tan phi', c b (c = c' + S) and the effective weight
+/// (W - u b)+. Taken once a slice instead of once an iteration (three calls of the
+/// library's trigonometry a slice and iteration were most of a factor-of-safety search).
+struct BishopSliceTerms {
+  Real cos_alpha, tan_alpha, tan_phi, cohesion_width, effective_weight;
+};
+
+std::vector<BishopSliceTerms> bishopSliceTerms(const std::vector<Slice>& slices, Real sign) {
+  std::vector<BishopSliceTerms> terms;
+  terms.reserve(slices.size());
+  for (const Slice& s : slices) {
+    const Real alpha = sign * s.base_angle;
+    const Real u = std::max(s.pore_pressure, Real(0));
+    terms.push_back({std::cos(alpha), std::tan(alpha), std::tan(s.friction_angle),
+                     s.apparentCohesion() * s.width, std::max(s.weight - u * s.width, Real(0))});
+  }
+  return terms;
+}
+
 }  // namespace
 
 Real bishopMAlpha(Real alpha, Real friction_angle, Real factor) {
-  return std::cos(alpha) * (1 + std::tan(alpha) * std::tan(friction_angle) / factor);
+  return mAlpha(std::cos(alpha), std::tan(alpha), std::tan(friction_angle), factor);
 }
 
 FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices, Real external_driving) {
@@ -60,21 +85,18 @@ FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOp
   // iteration can jump below it from a low guess (the ordinary F, for instance) and then
   // converge to a meaningless root with m_alpha < 0; an iterate that would leave the range
   // is replaced by the midpoint between the current F and F_zero instead.
+  const std::vector<BishopSliceTerms> terms = bishopSliceTerms(slices, sign);
   Real zero_m_factor = 0;
-  for (const Slice& s : slices) {
-    zero_m_factor =
-        std::max(zero_m_factor, -std::tan(sign * s.base_angle) * std::tan(s.friction_angle));
-  }
+  for (const BishopSliceTerms& t : terms)
+    zero_m_factor = std::max(zero_m_factor, -t.tan_alpha * t.tan_phi);
   Real factor = options.initial_guess;
   if (!(factor > 0)) factor = ordinaryMethodOfSlices(slices, external_driving).value;
   if (!(factor > zero_m_factor)) factor = zero_m_factor > 0 ? 2 * zero_m_factor : Real(1);
   for (int k = 1; k <= options.max_iterations; ++k) {
     Real resisting = 0;
-    for (const Slice& s : slices) {
-      const Real m = bishopMAlpha(sign * s.base_angle, s.friction_angle, factor);
-      const Real u = std::max(s.pore_pressure, Real(0));
-      const Real effective = std::max(s.weight - u * s.width, Real(0));
-      resisting += (s.apparentCohesion() * s.width + effective * std::tan(s.friction_angle)) / m;
+    for (const BishopSliceTerms& t : terms) {
+      const Real m = mAlpha(t.cos_alpha, t.tan_alpha, t.tan_phi, factor);
+      resisting += (t.cohesion_width + t.effective_weight * t.tan_phi) / m;
     }
     result.iterations = k;
     Real next = resisting / result.driving;
@@ -89,9 +111,8 @@ FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOp
   result.value = factor;
   if (result.converged) {
     Real min_m = std::numeric_limits<Real>::infinity();
-    for (const Slice& s : slices) {
-      min_m = std::min(min_m, bishopMAlpha(sign * s.base_angle, s.friction_angle, factor));
-    }
+    for (const BishopSliceTerms& t : terms)
+      min_m = std::min(min_m, mAlpha(t.cos_alpha, t.tan_alpha, t.tan_phi, factor));
     result.min_m_alpha = min_m;
     result.admissible = min_m > options.min_m_alpha;
   }
