@@ -200,12 +200,9 @@ TEST(Consolidation, HeldLiquidPressureKeepsTheRetentionCurvesValuesAtItsPressure
   // stored S_L and k are stale when the stage begins (0.3 and 1e-9 m/s everywhere): after
   // the first step and after 200 damped steps under gravity, every point holds exactly (to
   // the bit) the curves' values at its p_L, and p_L is the one it started with.
-  MaterialSpec silt = test::elasticMaterial("silt", PhaseModel::Unsaturated, 1e7, 0.3, 0.4);
-  silt.retention.model = RetentionModel::VanGenuchten;
-  silt.retention.reference_pressure = 19000;
-  silt.retention.lambda = 0.75;
-  silt.retention.saturation_min = 0.16;
-  silt.retention.saturation_max = 0.8;
+  MaterialSpec silt =
+      test::withVanGenuchten(test::elasticMaterial("silt", PhaseModel::Unsaturated, 1e7, 0.3, 0.4),
+                             19000, 0.75, 0.16, 0.8);
   silt.conductivity.model = ConductivityModel::Mualem;
   silt.conductivity.mualem_lambda = 0.75;
   silt.conductivity.saturated_conductivity = 5.3e-6;

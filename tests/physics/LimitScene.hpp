@@ -19,12 +19,8 @@ struct LimitScene {
   PointShapes shapes;
   PointRates rates;
   LimitScene() {
-    MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 1e7, 0.2, 0.5);
-    soil.retention.model = RetentionModel::VanGenuchten;
-    soil.retention.reference_pressure = 1e5;
-    soil.retention.lambda = 0.5;
-    soil.retention.saturation_min = 0.1;
-    soil.retention.saturation_max = 1;
+    const MaterialSpec soil = test::withVanGenuchten(
+        test::elasticMaterial("soil", PhaseModel::Unsaturated, 1e7, 0.2, 0.5), 1e5, 0.5, 0.1, 1);
     table = MaterialTable({soil});
     evaluatePointShapes(mesh, points, shapes);
     rates.allocate(points.count);

@@ -172,6 +172,17 @@ inline MaterialSpec elasticMaterial(const std::string& name, PhaseModel phase, R
   return m;
 }
 
+/// `material` on van Genuchten's retention curve (Eq. 4.28): p_ref (Pa), lambda, S_min, S_max.
+inline MaterialSpec withVanGenuchten(MaterialSpec material, Real reference_pressure, Real lambda,
+                                     Real saturation_min, Real saturation_max) {
+  material.retention.model = RetentionModel::VanGenuchten;
+  material.retention.reference_pressure = reference_pressure;
+  material.retention.lambda = lambda;
+  material.retention.saturation_min = saturation_min;
+  material.retention.saturation_max = saturation_max;
+  return material;
+}
+
 inline BoundarySpec solidFixity(const std::string& name, const std::string& set, bool x, bool y) {
   BoundarySpec b;
   b.name = name;
