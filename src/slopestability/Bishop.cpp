@@ -47,6 +47,22 @@ std::vector<BishopSliceTerms> bishopSliceTerms(const std::vector<Slice>& slices,
   return terms;
 }
 
+/// The ordinary method's resisting sum, sum[c l + (W cos(alpha) - u l)+ tan phi'] with
+/// l = b / cos(alpha), from the slices' terms (bishopSliceTerms with the same sign).
+Real ordinaryResisting(const std::vector<Slice>& slices,
+                       const std::vector<BishopSliceTerms>& terms) {
+  Real resisting = 0;
+  for (std::size_t i = 0; i < slices.size(); ++i) {
+    const Slice& s = slices[i];
+    const Real l = s.width / terms[i].cos_alpha;
+    const Real u = std::max(s.pore_pressure, Real(0));
+    // Effective normal force W cos(alpha) - u l, not allowed to become tensile.
+    const Real normal = std::max(s.weight * terms[i].cos_alpha - u * l, Real(0));
+    resisting += s.apparentCohesion() * l + normal * terms[i].tan_phi;
+  }
+  return resisting;
+}
+
 }  // namespace
 
 Real bishopMAlpha(Real alpha, Real friction_angle, Real factor) {
@@ -59,16 +75,7 @@ FactorOfSafety ordinaryMethodOfSlices(const std::vector<Slice>& slices, Real ext
   result.driving = drivingSum(slices, sign, external_driving);
   result.converged = true;
   if (!(result.driving > 0)) return result;
-  Real resisting = 0;
-  for (const Slice& s : slices) {
-    const Real alpha = sign * s.base_angle;
-    const Real l = s.width / std::cos(alpha);
-    const Real u = std::max(s.pore_pressure, Real(0));
-    // Effective normal force W cos(alpha) - u l, not allowed to become tensile.
-    const Real normal = std::max(s.weight * std::cos(alpha) - u * l, Real(0));
-    resisting += s.apparentCohesion() * l + normal * std::tan(s.friction_angle);
-  }
-  result.value = resisting / result.driving;
+  result.value = ordinaryResisting(slices, bishopSliceTerms(slices, sign)) / result.driving;
   result.admissible = true;
   return result;
 }
@@ -90,7 +97,7 @@ FactorOfSafety bishopSimplified(const std::vector<Slice>& slices, const BishopOp
   for (const BishopSliceTerms& t : terms)
     zero_m_factor = std::max(zero_m_factor, -t.tan_alpha * t.tan_phi);
   Real factor = options.initial_guess;
-  if (!(factor > 0)) factor = ordinaryMethodOfSlices(slices, external_driving).value;
+  if (!(factor > 0)) factor = ordinaryResisting(slices, terms) / result.driving;  // ordinary F
   if (!(factor > zero_m_factor)) factor = zero_m_factor > 0 ? 2 * zero_m_factor : Real(1);
   for (int k = 1; k <= options.max_iterations; ++k) {
     Real resisting = 0;
