@@ -30,6 +30,7 @@
 #include "argine/simulation/RelaxationMonitor.hpp"
 #include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Setup.hpp"
+#include "argine/simulation/StepFallReport.hpp"
 #include "argine/timestep/Criteria.hpp"
 
 namespace argine {
@@ -216,9 +217,13 @@ void Simulation::runStage(const StageSpec& stage) {
   progress_->beginStage(stage.name, start, stage.duration, solver_->time());
   Real dt = 0;
   bool first_step = true;
+  StepFallReport step_falls;  // a log line each time the critical step halves
   while (solver_->time() < end - tolerance) {
     const TimeStepChoice& choice = solver_->chooseTimeStep();
     if (first_step && !options_.quiet) logTimeStep(stage, choice);
+    if (first_step) step_falls.begin(choice);
+    const std::string fell = step_falls.note(stage.name, solver_->time(), summary_.steps, choice);
+    if (!fell.empty()) log(fell);
     first_step = false;
     dt = choice.time_step;
     dt = std::min(dt, std::min(next_output_, end) - solver_->time());
