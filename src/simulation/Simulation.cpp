@@ -376,10 +376,8 @@ void Simulation::logTimeStep(const StageSpec& stage, const TimeStepChoice& choic
   std::printf("argine: stage '%s' (%s): dt = %.4g s", stage.name.c_str(),
               deckWord(kSolverWords, stage.solver), choice.time_step);
   if (choice.automatic)
-    std::printf(" = %.3g x %.4g s, governed by '%s' at point %d (%.4g, %.4g) m\n",
-                stage.time_step.safety_factor, choice.critical_step,
-                criterionName(choice.governing), choice.point_id, choice.position[0],
-                choice.position[1]);
+    std::printf(" = %.3g x %.4g s, %s\n", stage.time_step.safety_factor, choice.critical_step,
+                governingText(choice).c_str());
   else
     std::printf(" (fixed)\n");
   std::printf(

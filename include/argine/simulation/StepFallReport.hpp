@@ -15,6 +15,10 @@
 
 namespace argine {
 
+/// "governed by '<criterion>' at point <id> (x, y) m": the text of an automatic choice's
+/// governing criterion and point, for the stage's first-step line and the fall lines alike.
+std::string governingText(const TimeStepChoice& choice);
+
 class StepFallReport {
  public:
   /// A stage starts (or continues from a checkpoint) with this step choice: the reference.
