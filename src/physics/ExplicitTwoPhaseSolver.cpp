@@ -535,6 +535,7 @@ void ExplicitTwoPhaseSolver::constrainNodalVelocities() {
                                correction_locks_);
   }
   applyVelocityBoundaryConditions();
+  if (momentum_.liquid_with_solid) moveLiquidWithSolid(nodes_in_use_, grid_);
 }
 
 void ExplicitTwoPhaseSolver::computeStrainIncrements(Real dt) {

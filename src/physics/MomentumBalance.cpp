@@ -102,6 +102,17 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
       });
 }
 
+void moveLiquidWithSolid(const ActiveNodes& active, GridFields& grid) {
+  const auto nodes = active.nodes();
+  const GridFields g = grid;
+  Kokkos::parallel_for(
+      "move_liquid_with_solid", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int d = 0; d < kDim; ++d) g.velocity_liquid_i(i, d) = g.velocity_solid_i(i, d);
+      });
+}
+
 void constrainAccelerations(const NodalConstraints& constraints, const MomentumSettings& settings,
                             Real dt, GridFields& grid) {
   const auto nodes = constraints.nodes();

@@ -193,6 +193,38 @@ TEST(Consolidation, HeldLiquidPressureGivesTheDrainedResponse) {
               -top_settlement);
 }
 
+TEST(Consolidation, HeldLiquidPressureMovesTheLiquidWithTheSolidUnderEveryTransfer) {
+  // The held column of HeldLiquidPressureGivesTheDrainedResponse under APIC and TPIC, whose
+  // points take v_L from the grid: the grid's liquid velocity is the solid's (moveLiquidWith-
+  // Solid), so every point's liquid velocity is its solid velocity, to the bit, all the way
+  // (the fixed base keeps a mapped v_L that it takes v_S from otherwise). Without it the
+  // liquid's kinetic energy grows from the base while the solid comes to rest.
+  for (const TransferScheme scheme : {TransferScheme::Apic, TransferScheme::Tpic}) {
+    SCOPED_TRACE(scheme == TransferScheme::Apic ? "APIC" : "TPIC");
+    test::Column column(10, 0.1, 1.0, consolidationClay());
+    auto boundaries = test::columnBoundaries();
+    boundaries.push_back(test::traction("load", "top", 0.0, -1e4));
+    ExplicitTwoPhaseSolver solver(column.mesh, column.points, column.materials);
+    StageSpec stage = makeStage("drained", SolverKind::QuasiStatic, 9.81, 0.7, boundaries,
+                                {CriterionKind::CflDry});
+    stage.hold_liquid_pressure = true;
+    stage.transfer = scheme;
+    solver.beginStage(stage);
+    Real largest_solid_speed = 0;
+    for (int k = 0; k < 400; ++k) {
+      solver.step(solver.chooseTimeStep().time_step);
+      const auto vs = hostCopy(column.points.velocity_solid);
+      const auto vl = hostCopy(column.points.velocity_liquid);
+      for (int p = 0; p < column.points.count; ++p)
+        for (int d = 0; d < kDim; ++d) {
+          ASSERT_EQ(vl(p, d), vs(p, d)) << "step " << k << ", point " << p;
+          largest_solid_speed = std::max(largest_solid_speed, std::abs(vs(p, d)));
+        }
+    }
+    EXPECT_GT(largest_solid_speed, 0.0);  // the column did move
+  }
+}
+
 TEST(Consolidation, HeldLiquidPressureKeepsTheRetentionCurvesValuesAtItsPressure) {
   // A held stage renews S_L and k from the held p_L once, after its first step, and then
   // skips the curves (their values could not change). An unsaturated column on van Genuchten
