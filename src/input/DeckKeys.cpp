@@ -372,7 +372,10 @@ ListSchema zoneKeys() {
   ListSchema zone;
   zone.add(KeySpec::choice("Type", deckWords(kZoneWords),
                            "region tested at the midpoints of the current free sides: "
-                           "everywhere, half-plane, box or polyline band")
+                           "everywhere, half-plane, box or polyline band. A side whose "
+                           "midpoint lies outside is not taken, though its nodes lie inside: "
+                           "to leave out a mesh boundary (a base at y = 0), keep the zone's "
+                           "edge nearer to it than half the shortest side that meets it")
                .require());
   zone.add(KeySpec::reals("Point (m)", "m", 2, "a point on the edge of the half-plane")
                .when("Type", {"half-plane"})
