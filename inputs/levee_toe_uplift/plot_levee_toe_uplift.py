@@ -295,7 +295,8 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
               f"bins at x = {xs}")
     k = times[-1]
     L, where = uplift_length(frames[k], threshold)
-    print(f"  last output t = {(k - t0) / 60:.2f} min: {L:.1f} m")
+    xs = f"{min(where):.1f}..{max(where):.1f}" if where else "-"
+    print(f"  last output t = {(k - t0) / 60:.2f} min: {L:.1f} m; bins at x = {xs}")
     if fos:
         print("factor of safety (Bishop, landside) at the phase ends / last output:")
         for m in PHASE_ENDS_MIN + [1e9]:
