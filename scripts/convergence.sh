@@ -8,7 +8,10 @@
 # CONVERGENCE_TIMES (s after the event started; default "2 3 6 20"), CONVERGENCE_START (the
 # simulation time the event starts at; default 1), CONVERGENCE_LAST_DURATION (s: the last
 # stage's Duration in every copy, e.g. 19 for the first 20 s of levee_rainfall's 100 s;
-# default: the deck's), ARGINE_RANKS (MPI ranks per run).
+# default: the deck's), ARGINE_RANKS (MPI ranks per run), CONVERGENCE_CHECKPOINT_MIN (min of
+# wall between checkpoints in every copy, for runs of hours: a run stopped part-way continues
+# from its folder's checkpoint when the script is run again with the same settings; the copy
+# is written anew with the same text, which the checkpoint's deck hash checks).
 # Results in results/convergence/<scene>_h<size>/, the chart in
 # results/convergence/<scene>_convergence.png. A run whose results exist is not repeated
 # (delete its folder to rerun it).
@@ -44,13 +47,23 @@ for h in "${sizes[@]}"; do
   copy=$(dirname "$deck")/.convergence_$name.yaml
   sed -e "s/Element Size (m): [0-9.eE+-]*/Element Size (m): $h/" \
     -e "s/Name: [A-Za-z0-9_]*}/Name: $name}/" "$deck" >"$copy"
+  restart=()
+  if [[ -n ${CONVERGENCE_CHECKPOINT_MIN:-} ]]; then
+    sed -i "s/Name: $name}/Name: $name, Checkpoint: {Wall Interval (min): $CONVERGENCE_CHECKPOINT_MIN}}/" "$copy"
+    grep -q "Checkpoint: {Wall Interval" "$copy" || { echo "$copy: no 'Name: $name}' to add a checkpoint to" >&2; exit 2; }
+    if [[ -f $dir/$name.checkpoint ]]; then
+      restart=(--restart "$dir/$name.checkpoint")
+      echo "h = $h m: continuing from $dir/$name.checkpoint"
+    fi
+  fi
   if [[ -n ${CONVERGENCE_LAST_DURATION:-} ]]; then  # the last stage's Duration (s)
     last=$(grep -n "Duration (s):" "$copy" | tail -1 | cut -d: -f1)
     sed -i "${last}s/Duration (s): [0-9.eE+-]*/Duration (s): $CONVERGENCE_LAST_DURATION/" "$copy"
   fi
   echo "h = $h m: running $deck -> $dir"
   status=0
-  "${launcher[@]}" "$build_dir/argine" run "$copy" --output "$dir" >"$dir/$name.log" 2>&1 || status=$?
+  ((${#restart[@]})) || : >"$dir/$name.log"  # a fresh run starts its log, a continued one adds
+  "${launcher[@]}" "$build_dir/argine" run "$copy" --output "$dir" "${restart[@]}" >>"$dir/$name.log" 2>&1 || status=$?
   rm -f "$copy"
   if ((status != 0)); then
     echo "h = $h m: argine failed ($status), see $dir/$name.log" >&2
