@@ -556,8 +556,9 @@ ListSchema linearSolverKeys() {
                              "Belos Krylov solver (cg needs a symmetric system: no "
                              "non-symmetric terms are assembled, so both work), or direct: "
                              "Amesos2 KLU2 sparse LU (symbolic factorisation once per stage; "
-                             "Tolerance, Preconditioner ignored; one MPI rank only: on more "
-                             "a run refuses it before it starts, doc/parallel.md)")
+                             "Tolerance, Preconditioner ignored; on several MPI ranks the "
+                             "matrix is gathered to every rank and factorised there, "
+                             "doc/parallel.md)")
                  .byDefault(std::string("gmres")));
   linear.add(KeySpec::real("Tolerance", "-", "relative residual of each linear solve")
                  .above(0)

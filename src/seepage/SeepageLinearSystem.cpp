@@ -1,11 +1,14 @@
 #include "SeepageLinearSystem.hpp"
 
+#include <mpi.h>
 #include <Amesos2.hpp>
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_DefaultSerialComm.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -43,6 +46,11 @@ struct SeepageLinearSystem::Tpetra {
   Teuchos::RCP<Preconditioner> preconditioner;
   Teuchos::RCP<Belos::SolverManager<Real, MV, OP>> solver;
   Teuchos::RCP<Amesos2::Solver<Matrix, MV>> direct;  // Solver: direct (KLU2)
+  // Solver: direct on several ranks: the whole matrix gathered to every rank and factorised
+  // there on a one-process communicator (KLU2 given the split rows answered wrongly,
+  // doc/parallel.md).
+  Teuchos::RCP<Matrix> gathered;
+  Teuchos::RCP<Vector> gathered_b, gathered_x, b_everywhere;
 };
 
 SeepageLinearSystem::SeepageLinearSystem(Teuchos::RCP<const Teuchos::Comm<int>> comm, int num_dofs,
@@ -118,6 +126,11 @@ void SeepageLinearSystem::setSolver(const LinearSolverSpec& spec) {
   factorised_ = false;
   t_->preconditioner = Teuchos::null;
   preconditioner_initialised_ = false;
+  gathered_direct_ = false;
+  if (spec.solver == "DIRECT" && t_->comm->getSize() > 1) {
+    gathered_direct_ = true;  // factoriseGathered at the first solve
+    return;
+  }
   if (spec.solver == "DIRECT") {
     // KLU2 ships with Amesos2; the sparsity pattern never changes within a stage, so the
     // symbolic factorisation (ordering) is done once and each solve refactors numerically.
@@ -189,6 +202,21 @@ int SeepageLinearSystem::solve(const std::vector<Real>& b, std::vector<Real>& x,
   }
   t_->x->putScalar(0.0);
   int iterations = 1;
+  if (gathered_direct_) {
+    if (refactor || !factorised_) factoriseGathered();
+    factorised_ = true;
+    t_->b_everywhere->doImport(*t_->b, *t_->to_everywhere, ::Tpetra::INSERT);
+    {
+      const auto from = t_->b_everywhere->getData();
+      auto to = t_->gathered_b->getDataNonConst();
+      for (int i = 0; i < num_dofs_; ++i) to[i] = from[i];
+    }
+    t_->direct->solve();
+    x.assign(num_dofs_, 0.0);
+    const auto xv = t_->gathered_x->getData();
+    for (int i = 0; i < num_dofs_; ++i) x[i] = xv[i];
+    return iterations;
+  }
   if (!t_->direct.is_null()) {
     if (refactor || !factorised_) t_->direct->numericFactorization();
     factorised_ = true;
@@ -233,6 +261,64 @@ int SeepageLinearSystem::solveIteratively(bool refactor) {
     throw RunError(out.str());
   }
   return t_->solver->getNumIters();
+}
+
+void SeepageLinearSystem::factoriseGathered() {
+  using T = Tpetra;
+  // The owned rows (global columns and values) of every rank, in rank order: the ranks own
+  // consecutive blocks of rows, so the concatenation is rows 0..n-1.
+  std::vector<int> lengths, columns;
+  std::vector<Real> values;
+  for (int row = first_; row < end_; ++row) {
+    const size_t count = t_->matrix->getNumEntriesInGlobalRow(row);
+    std::vector<T::GO> cols(count);
+    std::vector<Real> vals(count);
+    size_t got = 0;
+    t_->matrix->getGlobalRowCopy(row, Teuchos::ArrayView<T::GO>(cols),
+                                 Teuchos::ArrayView<Real>(vals), got);
+    lengths.push_back(static_cast<int>(got));
+    for (size_t k = 0; k < got; ++k) {
+      columns.push_back(static_cast<int>(cols[k]));
+      values.push_back(vals[k]);
+    }
+  }
+  const auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(t_->comm, true);
+  const MPI_Comm comm = *mpi->getRawMpiComm();
+  const int ranks = t_->comm->getSize();
+  auto allGather = [&](const auto& mine, auto& all, MPI_Datatype type) {
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(ranks), offsets(ranks, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+    for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    all.resize(offsets[ranks - 1] + counts[ranks - 1]);
+    MPI_Allgatherv(mine.data(), count, type, all.data(), counts.data(), offsets.data(), type, comm);
+  };
+  std::vector<int> all_lengths, all_columns;
+  std::vector<Real> all_values;
+  allGather(lengths, all_lengths, MPI_INT);
+  allGather(columns, all_columns, MPI_INT);
+  allGather(values, all_values, MPI_DOUBLE);
+
+  const Teuchos::RCP<const Teuchos::Comm<int>> self = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  const auto rows =
+      Teuchos::rcp(new T::Map(static_cast<::Tpetra::global_size_t>(num_dofs_), 0, self));
+  const int widest = *std::max_element(all_lengths.begin(), all_lengths.end());
+  t_->gathered = Teuchos::rcp(new T::Matrix(rows, widest));
+  std::vector<T::GO> cols;
+  for (int row = 0, start = 0; row < num_dofs_; start += all_lengths[row], ++row) {
+    cols.assign(all_columns.begin() + start, all_columns.begin() + start + all_lengths[row]);
+    t_->gathered->insertGlobalValues(
+        row, Teuchos::ArrayView<const T::GO>(cols),
+        Teuchos::ArrayView<const Real>(all_values.data() + start, all_lengths[row]));
+  }
+  t_->gathered->fillComplete();
+  t_->gathered_b = Teuchos::rcp(new T::Vector(rows));
+  t_->gathered_x = Teuchos::rcp(new T::Vector(rows));
+  if (t_->b_everywhere.is_null()) t_->b_everywhere = Teuchos::rcp(new T::Vector(t_->everywhere));
+  t_->direct =
+      Amesos2::create<T::Matrix, T::MV>("KLU2", t_->gathered, t_->gathered_x, t_->gathered_b);
+  t_->direct->symbolicFactorization();
+  t_->direct->numericFactorization();
 }
 
 void SeepageLinearSystem::sumOverRanks(std::vector<Real>& v) const {

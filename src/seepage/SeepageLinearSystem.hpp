@@ -56,6 +56,7 @@ class SeepageLinearSystem {
  private:
   struct Tpetra;
   int solveIteratively(bool refactor);  ///< Belos on t_->b, t_->x
+  void factoriseGathered();             ///< direct on several ranks: every row on every rank
   std::unique_ptr<Tpetra> t_;
   int first_ = 0, end_ = 0, num_dofs_ = 0;
   std::vector<int> row_start_;        // per owned row: its first entry (entryCount() at the end)
@@ -63,7 +64,8 @@ class SeepageLinearSystem {
   std::vector<int> entry_local_col_;  // per entry: Tpetra local column index
   LinearSolverSpec spec_;
   bool preconditioner_initialised_ = false;
-  bool factorised_ = false;  ///< a factorisation / preconditioner of the current solver exists
+  bool factorised_ = false;       ///< a factorisation / preconditioner of the current solver exists
+  bool gathered_direct_ = false;  ///< direct on several ranks (factoriseGathered)
 };
 
 }  // namespace argine

@@ -54,18 +54,6 @@ double wallSeconds() {
   return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
 }
 
-// Amesos2's KLU2 on a matrix whose rows are split over the ranks returned updates of 1e11
-// Pa and more on the first step of the experimental slope's rise (2 ranks), where the same
-// step on one rank, and GMRES on two, converge at once: refused before anything runs
-// (doc/parallel.md, "Implicit seepage stages").
-void refuseDirectSeepageSolverOnRanks(const Deck& deck, int ranks) {
-  for (const StageSpec& stage : deck.stages)
-    if (stage.solver == SolverKind::ImplicitSeepage && stage.seepage.linear.solver == "DIRECT")
-      throw InputError("Stages/" + stage.name + "/Implicit Seepage/Linear Solver/Solver",
-                       "gmres or cg on " + std::to_string(ranks) +
-                           " MPI ranks (direct, Amesos2 KLU2, solves on one rank only)");
-}
-
 }  // namespace
 
 void checkDeckSupported(const Deck& deck) {
@@ -97,7 +85,6 @@ Simulation::Simulation(const Deck& deck, const RunOptions& options)
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   }
   if (ranks > 1) {
-    refuseDirectSeepageSolverOnRanks(deck_, ranks);
     ranks_ = std::make_unique<RankDecomposition>(MPI_COMM_WORLD, mesh_,
                                                  pointsPerElementWeights(mesh_, points_));
     solver_->distribute(*ranks_);
