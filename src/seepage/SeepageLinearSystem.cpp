@@ -127,6 +127,7 @@ void SeepageLinearSystem::setSolver(const LinearSolverSpec& spec) {
   t_->preconditioner = Teuchos::null;
   preconditioner_initialised_ = false;
   gathered_direct_ = false;
+  t_->gathered = Teuchos::null;
   if (spec.solver == "DIRECT" && t_->comm->getSize() > 1) {
     gathered_direct_ = true;  // factoriseGathered at the first solve
     return;
@@ -269,10 +270,12 @@ void SeepageLinearSystem::factoriseGathered() {
   // consecutive blocks of rows, so the concatenation is rows 0..n-1.
   std::vector<int> lengths, columns;
   std::vector<Real> values;
+  std::vector<T::GO> cols;
+  std::vector<Real> vals;
   for (int row = first_; row < end_; ++row) {
     const size_t count = t_->matrix->getNumEntriesInGlobalRow(row);
-    std::vector<T::GO> cols(count);
-    std::vector<Real> vals(count);
+    cols.resize(count);
+    vals.resize(count);
     size_t got = 0;
     t_->matrix->getGlobalRowCopy(row, Teuchos::ArrayView<T::GO>(cols),
                                  Teuchos::ArrayView<Real>(vals), got);
@@ -299,25 +302,36 @@ void SeepageLinearSystem::factoriseGathered() {
   allGather(columns, all_columns, MPI_INT);
   allGather(values, all_values, MPI_DOUBLE);
 
-  const Teuchos::RCP<const Teuchos::Comm<int>> self = Teuchos::rcp(new Teuchos::SerialComm<int>);
-  const auto rows =
-      Teuchos::rcp(new T::Map(static_cast<::Tpetra::global_size_t>(num_dofs_), 0, self));
-  const int widest = *std::max_element(all_lengths.begin(), all_lengths.end());
-  t_->gathered = Teuchos::rcp(new T::Matrix(rows, widest));
-  std::vector<T::GO> cols;
+  // The graph never changes within a stage: the gathered matrix and its symbolic
+  // factorisation are made once, later calls replace the values.
+  const bool first = t_->gathered.is_null();
+  if (first) {
+    const Teuchos::RCP<const Teuchos::Comm<int>> self = Teuchos::rcp(new Teuchos::SerialComm<int>);
+    const auto rows =
+        Teuchos::rcp(new T::Map(static_cast<::Tpetra::global_size_t>(num_dofs_), 0, self));
+    const int widest = *std::max_element(all_lengths.begin(), all_lengths.end());
+    t_->gathered = Teuchos::rcp(new T::Matrix(rows, widest));
+    t_->gathered_b = Teuchos::rcp(new T::Vector(rows));
+    t_->gathered_x = Teuchos::rcp(new T::Vector(rows));
+    t_->b_everywhere = Teuchos::rcp(new T::Vector(t_->everywhere));
+  } else {
+    t_->gathered->resumeFill();
+  }
   for (int row = 0, start = 0; row < num_dofs_; start += all_lengths[row], ++row) {
     cols.assign(all_columns.begin() + start, all_columns.begin() + start + all_lengths[row]);
-    t_->gathered->insertGlobalValues(
-        row, Teuchos::ArrayView<const T::GO>(cols),
-        Teuchos::ArrayView<const Real>(all_values.data() + start, all_lengths[row]));
+    const Teuchos::ArrayView<const T::GO> row_cols(cols);
+    const Teuchos::ArrayView<const Real> row_values(all_values.data() + start, all_lengths[row]);
+    if (first)
+      t_->gathered->insertGlobalValues(row, row_cols, row_values);
+    else
+      t_->gathered->replaceGlobalValues(row, row_cols, row_values);
   }
   t_->gathered->fillComplete();
-  t_->gathered_b = Teuchos::rcp(new T::Vector(rows));
-  t_->gathered_x = Teuchos::rcp(new T::Vector(rows));
-  if (t_->b_everywhere.is_null()) t_->b_everywhere = Teuchos::rcp(new T::Vector(t_->everywhere));
-  t_->direct =
-      Amesos2::create<T::Matrix, T::MV>("KLU2", t_->gathered, t_->gathered_x, t_->gathered_b);
-  t_->direct->symbolicFactorization();
+  if (first) {
+    t_->direct =
+        Amesos2::create<T::Matrix, T::MV>("KLU2", t_->gathered, t_->gathered_x, t_->gathered_b);
+    t_->direct->symbolicFactorization();
+  }
   t_->direct->numericFactorization();
 }
 
