@@ -21,7 +21,10 @@ are in DIR/experimental_slope_variants/). Writes next to this script:
   experimental_slope_whole_test_variants.png  the same for the slow deck and its run_variants.sh
                                            slow_* variants (DIR/experimental_slope_variants/)
 and prints, per run, F at the end of every water level's hold and the first level at which
-F < 1.
+F < 1. With --mesh-study it reads only DIR/convergence/experimental_slope_slow_h<h>/ (the
+runs of scripts/convergence.sh), prints the drawdown's measures per mesh with their changes,
+observed order and Richardson estimate, and writes experimental_slope_mesh_study.png (the
+distance to that estimate against wall time).
 """
 import argparse
 import csv
@@ -113,13 +116,18 @@ def load(results):
     return runs
 
 
+def point_variable_numbers(f):
+    """{name: number} of an Exodus file's point (nodal) variables, as in vals_nod_var<number>."""
+    names = ["".join(c.decode() for c in row).strip("\x00 ")
+             for row in f.variables["name_nod_var"][:]]
+    return {n: k + 1 for k, n in enumerate(names)}
+
+
 def point_displacements(path):
     """(times, x0, y0, [(u_x, u_y) per output]) of a points file (Exodus)."""
     from scipy.io import netcdf_file
     with netcdf_file(path, "r", mmap=False) as f:
-        names = ["".join(c.decode() for c in row).strip("\x00 ")
-                 for row in f.variables["name_nod_var"][:]]
-        var = {n: k + 1 for k, n in enumerate(names)}
+        var = point_variable_numbers(f)
         times = f.variables["time_whole"][:].copy()
         x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
         ux, uy = (f.variables["vals_nod_var%d" % var[n]] for n in ("displ_x", "displ_y"))
@@ -193,11 +201,9 @@ def plot_factor(runs, path):
 def points_at(directory, name, time):
     from scipy.io import netcdf_file
     with netcdf_file(os.path.join(directory, name + "_points.e"), "r", mmap=False) as f:
-        names = ["".join(c.decode() for c in row).strip("\x00 ")
-                 for row in f.variables["name_nod_var"][:]]
         times = f.variables["time_whole"][:].copy()
         k = int(np.argmin(abs(times - time)))
-        var = {n: k2 + 1 for k2, n in enumerate(names)}
+        var = point_variable_numbers(f)
         p = f.variables["vals_nod_var%d" % var["pressure_liquid"]][k].copy()
         x = f.variables["coordx"][:].copy() + f.variables["vals_nod_var%d" % var["displ_x"]][k]
         y = f.variables["coordy"][:].copy() + f.variables["vals_nod_var%d" % var["displ_y"]][k]
@@ -405,7 +411,8 @@ def report_whole_test(results, name, deck):
           f"in it: {(du > 0.1).sum()} of {len(du)}")
     report_drawdown_pressures_and_probes(directory, name, start)
     return dict(name=name, fs=fs, rows=rows, x=x, y=y, u=u, directory=directory,
-                drawdown_start=start)
+                drawdown_start=start, drawdown_largest=du.max(), front=x[y < 0.5].max(),
+                mobilised=(du > 0.1).mean())
 
 
 def report_drawdown_pressures_and_probes(directory, name, start):
@@ -417,6 +424,15 @@ def report_drawdown_pressures_and_probes(directory, name, start):
     print(f"  drawdown outputs {during.sum()}: {(outside > 0).sum()} with p_L outside the "
           f"physical range, at most {int(outside.max())} points; kinetic energy at the end "
           f"{diagnostics['kinetic_energy_solid'][during][-1]:.2f} J/m")
+    for label, (moved, peak, when) in probe_moves(directory, name, start).items():
+        print(f"  probe {label:11s} |u| since the drawdown started {moved:.3f} m; peak speed "
+              f"{peak:.3f} m/s at {when:.1f} s after")
+
+
+def probe_moves(directory, name, start):
+    """{probe: (|u| from `start` to the last output, peak speed after `start`, its time after
+    `start`)} from the probes' CSV files."""
+    moves = {}
     for probe in sorted(glob.glob(os.path.join(directory, name + "_probe_*.csv"))):
         p = read_csv(probe)
         k0 = int(np.argmin(np.abs(p["time"] - start)))
@@ -425,8 +441,8 @@ def report_drawdown_pressures_and_probes(directory, name, start):
         speed = np.hypot(p["velocity_x"], p["velocity_y"])[k0:]
         j = int(np.argmax(speed))
         label = os.path.basename(probe)[len(name + "_probe_"):-len(".csv")]
-        print(f"  probe {label:11s} |u| since the drawdown started {moved[-1]:.3f} m; peak speed "
-              f"{speed[j]:.3f} m/s at {p['time'][k0 + j] - start:.1f} s after")
+        moves[label] = (moved[-1], speed[j], p["time"][k0 + j] - start)
+    return moves
 
 
 def plot_whole_test(runs, path):
@@ -473,10 +489,147 @@ def plot_whole_test(runs, path):
     print(f"wrote {path}")
 
 
+MESH_STUDY_NAME = "experimental_slope_slow_h"  # scripts/convergence.sh's run names
+
+
+def wall_seconds(log):
+    """The wall time of a run from the last line of its log ("... simulated in X s wall")."""
+    with open(log, errors="replace") as f:
+        found = re.findall(r"simulated in ([0-9.eE+-]+) s wall", f.read())
+    return float(found[-1]) if found else math.nan
+
+
+def rise_pressure_samples():
+    """Where the rise's p_L of two meshes is compared: three verticals (x = 3, 6, 8 m, 0.1 m
+    inside the soil at both ends) and the face 0.1-1 m deep (its inward normal, from 30 to
+    95 % of its length from the crest)."""
+    samples, kinds = [], []
+    for x in (3.0, 6.0, 8.0):
+        top = 6.0 if x <= 5.0 else 11.0 - x
+        for y in np.linspace(0.1, top - 0.1, 40):
+            samples.append((x, y))
+            kinds.append("verticals")
+    for s in np.linspace(0.3, 0.95, 30):
+        for d in np.linspace(0.1, 1.0, 10):
+            samples.append((5.0 + 6.0 * s - d / math.sqrt(2), 6.0 - 6.0 * s - d / math.sqrt(2)))
+            kinds.append("face")
+    return np.array(samples), np.array(kinds)
+
+
+def rise_pressures(run, samples, levels=(2.0, 3.0, 4.0)):
+    """{level: p_L at the samples at the end of its rise stage}, the run's points
+    interpolated linearly (SciPy, Delaunay of the points' current positions)."""
+    from scipy.interpolate import LinearNDInterpolator
+    ends = {float(stage[len("rise_"):].replace("_", ".")): end
+            for stage, end, *_ in run["rows"] if stage.startswith("rise_")}
+    pressures = {}
+    for level in levels:
+        x, y, p, _ = points_at(run["directory"], run["name"], ends[level])
+        pressures[level] = LinearNDInterpolator(np.c_[x, y], p)(samples)
+    return pressures
+
+
+def compare_rise_pressures(runs, sizes):
+    """The finest mesh's p_L at the ends of the 2 / 3 / 4 m rises against each coarser one's."""
+    samples, kinds = rise_pressure_samples()
+    finest = rise_pressures(runs[sizes[-1]], samples)
+    for h in sizes[:-1]:
+        other = rise_pressures(runs[h], samples)
+        for kind in ("verticals", "face"):
+            spread = []
+            for level in finest:
+                d = np.abs(finest[level] - other[level])[kinds == kind]
+                spread.append(f"{np.nanmax(d) / 1e3:.2f}")
+            print(f"  rise p_L, {sizes[-1]:g} m against {h:g} m, {kind:9s}: largest difference "
+                  f"at the ends of the 2 / 3 / 4 m rises {' / '.join(spread)} kPa "
+                  f"({int(np.isfinite(d).sum())} samples)")
+
+
+def mesh_study(results, path):
+    """The slow whole test's drawdown on the meshes of scripts/convergence.sh (results/
+    convergence/experimental_slope_slow_h<h>/): each quantity per element size, its change
+    to the next finer mesh, with three meshes the observed order p = log2(change ratio) and
+    Richardson's estimate of the mesh-converged value; a chart of each run's distance to that
+    estimate against its wall time."""
+    deck = os.path.join(HERE, "experimental_slope_slow.yaml")
+    runs = {}
+    for directory in glob.glob(os.path.join(results, MESH_STUDY_NAME + "*")):
+        name = os.path.basename(directory)
+        h = float(name[len(MESH_STUDY_NAME):])
+        run = report_whole_test(results, name, deck)
+        if run:
+            run["probes"] = probe_moves(directory, name, run["drawdown_start"])
+            run["wall"] = wall_seconds(os.path.join(directory, name + ".log"))
+            runs[h] = run
+    if not runs:
+        return
+    sizes = sorted(runs, reverse=True)
+    measures = [
+        ("largest |u| in the drawdown (m)", lambda r: r["drawdown_largest"]),
+        ("crest edge probe (m)", lambda r: r["probes"]["crest_edge"][0]),
+        ("mid-slope probe (m)", lambda r: r["probes"]["mid_slope"][0]),
+        ("toe probe (m)", lambda r: r["probes"]["toe"][0]),
+        ("front: farthest x at y < 0.5 m (m)", lambda r: r["front"]),
+        ("share of points moved > 0.1 m", lambda r: r["mobilised"]),
+    ]
+    print("\nmesh study of the slow whole test's drawdown: h (m) " +
+          " / ".join(f"{h:g}" for h in sizes) + "; wall (s) " +
+          " / ".join(f"{runs[h]['wall']:.0f}" for h in sizes))
+    if len(sizes) > 1:
+        compare_rise_pressures(runs, sizes)
+    estimates = {}
+    for label, measure in measures:
+        values = [measure(runs[h]) for h in sizes]
+        line = f"  {label:36s} " + " / ".join(f"{v:.3f}" for v in values)
+        changes = np.diff(values)
+        if len(changes):
+            line += "; changes " + " / ".join(f"{c:+.3f}" for c in changes)
+        # the three finest, each half the size of the one before
+        if len(values) >= 3 and all(abs(sizes[i] / sizes[i + 1] - 2) < 1e-9
+                                    for i in range(len(sizes) - 3, len(sizes) - 1)):
+            coarse, finer = changes[-2], changes[-1]
+            if coarse * finer > 0 and abs(finer) < abs(coarse):
+                order = math.log2(coarse / finer)
+                estimate = values[-1] + finer / (2 ** order - 1)
+                estimates[label] = estimate
+                line += f"; order {order:.2f}, estimate {estimate:.3f}"
+            else:
+                line += "; changes not shrinking: no order"
+        print(line)
+    if not estimates:
+        return
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for (label, measure), marker in zip(measures, "osD^v<"):
+        if label not in estimates or "share" in label:
+            continue
+        error = [abs(measure(runs[h]) - estimates[label]) for h in sizes]
+        ax.loglog([runs[h]["wall"] for h in sizes], error, marker + "-", label=label)
+    for h in sizes:
+        ax.annotate(f"{h:g} m", (runs[h]["wall"], abs(runs[h]["drawdown_largest"] -
+                    estimates[measures[0][0]])), textcoords="offset points", xytext=(4, 4),
+                    fontsize=8)
+    ax.set_xlabel("wall time of the whole run (s)")
+    ax.set_ylabel("|value - Richardson estimate| (m)")
+    ax.set_title("slow whole test, drawdown: accuracy against wall time", fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--results", default=os.path.join(ROOT, "results"))
+    parser.add_argument("--mesh-study", action="store_true",
+                        help="only the slow whole test on the meshes of scripts/convergence.sh "
+                        "(DIR/convergence/experimental_slope_slow_h<h>/)")
     args = parser.parse_args()
+    if args.mesh_study:
+        mesh_study(os.path.join(args.results, "convergence"),
+                   os.path.join(HERE, "experimental_slope_mesh_study.png"))
+        return
     runs = load(args.results)
     whole = [report_whole_test(args.results, name, os.path.join(HERE, name + ".yaml"))
              for name in ("experimental_slope", "experimental_slope_slow")]
