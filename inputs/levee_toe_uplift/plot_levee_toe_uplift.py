@@ -2,7 +2,7 @@
 """Figures and numbers of inputs/levee_toe_uplift/README.md from a run of a deck of this folder:
 
   /usr/bin/python3 inputs/levee_toe_uplift/plot_levee_toe_uplift.py [--results DIR] [--name NAME]
-                   [--figures DIR] [--threshold KPA]
+                   [--figures DIR] [--threshold KPA] [--handover MIN] [--after MIN ...]
 
 Reads <NAME>_section_s1.csv (every material point within 0.5 m of the sand/clay interface
 S1 at every output), the probes, the diagnostics, the factor-of-safety CSV and, for the
@@ -363,6 +363,54 @@ def report(results, name, frames, t0, diag, fos, points, threshold):
                   f"{y0[strained].min():.1f}..{y0[strained].max():.1f}")
 
 
+def handover_table(results, name, t0, diag, fos, minutes):
+    """The probes, the toe's speed, F and the kinetic energy at `minutes` after the hand-over
+    (the README's Phase 5 table): displacements since the hand-over, speeds from the probes'
+    velocities and from their displacement over the last 1.5 min."""
+    h = t0 + 60 * HANDOVER_MIN
+    probes = {}
+    for probe in ("crest", "toe"):
+        path = os.path.join(results, f"{name}_probe_{probe}.csv")
+        if not os.path.exists(path):
+            return
+        probes[probe] = columns(read_csv(path))
+    ke = diag["kinetic_energy_solid"] + diag["kinetic_energy_liquid"]
+
+    def at(series, t):
+        return int(np.argmin(np.abs(series["time"] - t)))
+
+    print(f"after the hand-over ({HANDOVER_MIN:g} min): minutes | crest landwards / settlement "
+          "(cm) | toe out / up (cm) | toe speed (mm/min) | crest / toe speed over 1.5 min "
+          "(mm/min) | F | kinetic energy (J/m)")
+    for m in minutes:
+        t = h + 60 * m
+        if t > probes["crest"]["time"][-1] + 30:
+            break
+        row = []
+        speeds = []
+        for probe in ("crest", "toe"):
+            pr = probes[probe]
+            j, j0, jb = at(pr, t), at(pr, h), at(pr, t - 90)
+            dx = pr["displacement_x"][j] - pr["displacement_x"][j0]
+            dy = pr["displacement_y"][j] - pr["displacement_y"][j0]
+            row.append(f"{100 * dx:.1f} / {100 * (-dy if probe == 'crest' else dy):.1f}")
+            dt = pr["time"][j] - pr["time"][jb]
+            du = np.hypot(pr["displacement_x"][j] - pr["displacement_x"][jb],
+                          pr["displacement_y"][j] - pr["displacement_y"][jb])
+            speeds.append(f"{6e4 * du / dt:.1f}" if dt > 0 else "-")
+        toe = probes["toe"]
+        j = at(toe, t)
+        v = 6e4 * np.hypot(toe["velocity_x"][j], toe["velocity_y"][j])
+        F = "-"
+        if fos:
+            sel = fos["time"] <= t + 1e-6
+            if sel.any():
+                F = f"{fos['factor_of_safety'][np.where(sel)[0][-1]]:.3f}"
+        k = int(np.argmin(np.abs(diag["time"] - t)))
+        print(f"  {(toe['time'][j] - h) / 60:6.1f} | {row[0]} | {row[1]} | {v:.1f} | "
+              f"{speeds[0]} / {speeds[1]} | {F} | {ke[k]:.3g}")
+
+
 def points_at(results, name, t):
     """Positions, displacement, deviatoric strain and p_L of the points at the output nearest t,
     and the displacement at the end of Phase 3."""
@@ -435,6 +483,9 @@ def main():
     parser.add_argument("--threshold", type=float, default=5.0, help="kPa")
     parser.add_argument("--handover", type=float, default=169.0,
                         help="minute of the hand-over to the explicit stage (351 for _phase5)")
+    parser.add_argument("--after", type=float, nargs="*",
+                        default=[10, 20, 30, 40, 60, 90, 120, 150, 180, 202],
+                        help="minutes after the hand-over for the probe table")
     parser.add_argument("--variants", action="store_true",
                         help="the permeability-ratio table and figure (run_variants.sh first)")
     args = parser.parse_args()
@@ -459,6 +510,7 @@ def main():
     fos = columns(read_csv(fos_path)) if os.path.exists(fos_path) else None
     points = read_points(results, name)
     report(results, name, frames, t0, diag, fos, points, threshold)
+    handover_table(results, name, t0, diag, fos, args.after)
     plot_interface(frames, t0, os.path.join(args.figures, f"{name}_interface.png"), name)
     plot_uplift(frames, t0, fos, threshold, os.path.join(args.figures, f"{name}_uplift.png"),
                 name)
