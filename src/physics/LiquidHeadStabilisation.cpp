@@ -24,26 +24,26 @@ enum SlopeChannel : int { kSlopeX, kSlopeY, kSlopeChannels };
 /// the gradient along the line, none across it.
 constexpr Real kFitRegularisation = 1e-12;
 
-/// Node i's centre (column 2c: sum N w q_c, 2c + 1: sum N w): m_i and its position.
+/// Node i's centre, m_i and its position (column 2c: the average of channel c, made once per
+/// node by divideNodeSums).
 struct NodeCentre {
   Real phi, x, y;
 };
 template <class Sums>
-KOKKOS_INLINE_FUNCTION NodeCentre nodeCentre(const Sums& sums, int i) {
-  const Real weight = sums(i, 1);
-  return {sums(i, 2 * kPhi) / weight, sums(i, 2 * kX) / weight, sums(i, 2 * kY) / weight};
+KOKKOS_INLINE_FUNCTION NodeCentre nodeCentre(const Sums& averages, int i) {
+  return {averages(i, 2 * kPhi), averages(i, 2 * kX), averages(i, 2 * kY)};
 }
 
 /// The gradient of the plane through the centres of the point's nodes, least squares with
 /// the weights N_i(x_p): exact for a linear phi (each centre lies on it), and through three
 /// centres (a triangle) the plane itself.
-template <class Shape, class Sums>
-KOKKOS_INLINE_FUNCTION void centresGradient(const Shape& shape, int nodes, const Sums& sums,
+template <class Shape, class Averages>
+KOKKOS_INLINE_FUNCTION void centresGradient(const Shape& shape, int nodes, const Averages& averages,
                                             Real gradient[kDim]) {
   Real w = 0, mx = 0, my = 0, mphi = 0;
   for (int a = 0; a < nodes; ++a) {
     if (shape.value[a] == 0) continue;  // a grid stencil corner may have no sums
-    const NodeCentre c = nodeCentre(sums, shape.node[a]);
+    const NodeCentre c = nodeCentre(averages, shape.node[a]);
     w += shape.value[a];
     mx += shape.value[a] * c.x;
     my += shape.value[a] * c.y;
@@ -55,7 +55,7 @@ KOKKOS_INLINE_FUNCTION void centresGradient(const Shape& shape, int nodes, const
   Real cxx = 0, cxy = 0, cyy = 0, cx_phi = 0, cy_phi = 0;
   for (int a = 0; a < nodes; ++a) {
     if (shape.value[a] == 0) continue;
-    const NodeCentre c = nodeCentre(sums, shape.node[a]);
+    const NodeCentre c = nodeCentre(averages, shape.node[a]);
     const Real dx = c.x - mx, dy = c.y - my, dphi = c.phi - mphi;
     cxx += shape.value[a] * dx * dx;
     cxy += shape.value[a] * dx * dy;
@@ -78,7 +78,7 @@ void gatherCentreGradients(const MaterialPoints& points, const PointShapes& shap
                            const AveragingScratch& centres, const AveragingScratch& slopes) {
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const auto node_sums = centres.node_sums;
+  const auto node_averages = centres.node_sums;  // divided: divideNodeSums
   const auto mode_pc = slopes.mode_pc;
   const auto slope_pc = slopes.value_pc;
   Kokkos::parallel_for(
@@ -88,7 +88,7 @@ void gatherCentreGradients(const MaterialPoints& points, const PointShapes& shap
         typename Family::Record record;
         const auto& shape = Family::of(shapes, p, element_p, local_p, record);
         Real gradient[kDim];
-        centresGradient(shape, Family::kNodes, node_sums, gradient);
+        centresGradient(shape, Family::kNodes, node_averages, gradient);
         slope_pc(p, kSlopeX) = gradient[0];
         slope_pc(p, kSlopeY) = gradient[1];
       });
@@ -102,8 +102,8 @@ void gatherNodePlanes(const MaterialPoints& points, const PointShapes& shapes,
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto position_p = points.position;
-  const auto centre_sums = centres.node_sums;
-  const auto slope_sums = slopes.node_sums;
+  const auto centre_averages = centres.node_sums;  // divided: divideNodeSums
+  const auto slope_averages = slopes.node_sums;
   const auto mode_pc = centres.mode_pc;
   Kokkos::parallel_for(
       "head_stabilisation_planes", Kokkos::RangePolicy<ExecSpace>(0, points.count),
@@ -116,10 +116,8 @@ void gatherNodePlanes(const MaterialPoints& points, const PointShapes& shapes,
         for (int a = 0; a < Family::kNodes; ++a) {
           if (shape.value[a] == 0) continue;
           const int i = shape.node[a];
-          const NodeCentre c = nodeCentre(centre_sums, i);
-          const Real weight = slope_sums(i, 1);
-          const Real bx = slope_sums(i, 2 * kSlopeX) / weight;
-          const Real by = slope_sums(i, 2 * kSlopeY) / weight;
+          const NodeCentre c = nodeCentre(centre_averages, i);
+          const Real bx = slope_averages(i, 2 * kSlopeX), by = slope_averages(i, 2 * kSlopeY);
           value += shape.value[a] * (c.phi + bx * (x - c.x) + by * (y - c.y));
         }
         head_p(p) = value;
@@ -182,11 +180,15 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
       });
   // The node centres (m_i, x_i), each point's gradient through its nodes' centres, the node
   // slopes b_i as their weighted averages, then the node planes at the points.
+  // (Each node's centre and slope divided once, where the points would divide them at each of
+  // their nodes: the same quotients, to the bit.)
   sumPointValues(points, shapes, active, centres_, exchange_);
+  divideNodeSums(active, centres_);
   withShapeFamily(shapes, [&](auto family) {
     gatherCentreGradients<decltype(family)>(points, shapes, centres_, slopes_);
   });
   sumPointValues(points, shapes, active, slopes_, exchange_);
+  divideNodeSums(active, slopes_);
   const auto head_p = Kokkos::subview(centre_pc, Kokkos::ALL, static_cast<int>(kPhi));
   withShapeFamily(shapes, [&](auto family) {
     gatherNodePlanes<decltype(family)>(points, shapes, centres_, slopes_, head_p);

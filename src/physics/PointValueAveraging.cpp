@@ -141,8 +141,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
       });
 }
 
-/// node_sums(i, 2c) <- sum N w q / sum N w, channel c's average at every active node: one
-/// division a node and channel instead of one a point, node and channel in gatherAverages.
+}  // namespace
+
 void divideNodeSums(const ActiveNodes& active, const AveragingScratch& scratch) {
   const auto active_nodes = active.nodes();
   const int channels = scratch.channels();
@@ -154,8 +154,6 @@ void divideNodeSums(const ActiveNodes& active, const AveragingScratch& scratch) 
         for (int c = 0; c < channels; ++c) node_sums(i, 2 * c) /= node_sums(i, 2 * c + 1);
       });
 }
-
-}  // namespace
 
 void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
                     const ActiveNodes& active, AveragingScratch& scratch, NodalExchange* exchange) {

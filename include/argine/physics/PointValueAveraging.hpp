@@ -82,6 +82,11 @@ struct AveragingScratch {
 void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
                     const ActiveNodes& active, AveragingScratch& scratch, NodalExchange* exchange);
 
+/// node_sums(i, 2c) <- sum N w q / sum N w, channel c's average at every active node (after
+/// sumPointValues): one division a node and channel instead of one a point, node and channel
+/// where the points read the averages.
+void divideNodeSums(const ActiveNodes& active, const AveragingScratch& scratch);
+
 /// Replaces value_pc(p, c) by its element or nodal average (file comment of the header) at
 /// the points with mode_pc(p, c) != none, for every channel c of `scratch`. Elements and
 /// nodes see only the points of the same mode in the same channel. On several ranks
