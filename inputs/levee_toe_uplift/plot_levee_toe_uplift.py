@@ -57,11 +57,6 @@ def columns(rows):
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else {}
 
 
-def stage_kinds(diag_times, fos_rows):
-    """Not needed: the kind of each output is told by whether sigma' changed (below)."""
-    return None
-
-
 def load_section(results, name):
     rows = read_csv(os.path.join(results, f"{name}_section_s1.csv"))
     by_time = defaultdict(list)
@@ -476,21 +471,23 @@ def compare_variants(runs, path, minute=170.0):
 
 
 def main():
+    global HANDOVER_MIN
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--name", default="levee_toe_uplift")
     parser.add_argument("--results")
     parser.add_argument("--figures", default=HERE)
     parser.add_argument("--threshold", type=float, default=5.0, help="kPa")
-    parser.add_argument("--handover", type=float, default=169.0,
-                        help="minute of the hand-over to the explicit stage (351 for _phase5)")
+    parser.add_argument("--handover", type=float, default=HANDOVER_MIN,
+                        help="minute of the hand-over to the explicit stage, event time "
+                        "(351.45 for _phase5)")
     parser.add_argument("--after", type=float, nargs="*",
                         default=[10, 20, 30, 40, 60, 90, 120, 150, 180, 202],
                         help="minutes after the hand-over for the probe table")
     parser.add_argument("--variants", action="store_true",
                         help="the permeability-ratio table and figure (run_variants.sh first)")
     args = parser.parse_args()
-    global HANDOVER_MIN
     HANDOVER_MIN = args.handover
+    os.makedirs(args.figures, exist_ok=True)
     if args.variants:
         v = os.path.join(ROOT, "results", "levee_toe_uplift_variants")
         runs = [("1e-1", os.path.join(v, "levee_toe_uplift_ratio1e-1"),
