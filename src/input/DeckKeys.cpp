@@ -658,6 +658,25 @@ ListSchema relaxationKeys() {
   return relaxation;
 }
 
+// ---- issue P12: back to the implicit path when the slide stops ----
+
+ListSchema handBackKeys() {
+  ListSchema hand_back;
+  hand_back.add(KeySpec::real("Largest Speed (m/s)", "m/s",
+                              "at rest when no point has moved more than this speed times the "
+                              "window's length over a window (a mean speed, robust to "
+                              "oscillations)")
+                    .above(0)
+                    .require());
+  hand_back.add(KeySpec::real("Window (s)", "s",
+                              "shortest window, judged at the first output at least this long "
+                              "after it began (the outputs must be closer than this); a window "
+                              "with more motion starts the next one")
+                    .above(0)
+                    .require());
+  return hand_back;
+}
+
 ListSchema strengthReductionKeys() {
   ListSchema srm;
   srm.add(KeySpec::real("Initial Factor", "-", "F of the first trial").above(0).byDefault(1.0));
@@ -874,12 +893,18 @@ ListSchema stageKeys() {
   stage.add(KeySpec::namedSublists("Boundary Conditions", "condition", boundaryKeys(),
                                    "boundary conditions of this stage"));
   stage.add(KeySpec::sublist("Implicit Seepage", implicitSeepageKeys(),
-                             "settings of an implicit seepage stage")
-                .when("Solver", {"implicit seepage"}));
+                             "settings of an implicit seepage stage (explicit stages: of the "
+                             "rest of the stage after Hand Back At Rest)")
+                .when("Solver", {"implicit seepage", "explicit"}));
   // issue P4
   stage.add(KeySpec::sublist("Relaxation", relaxationKeys(),
                              "end the stage early once quasi-static (Duration (s) is then the "
                              "maximum)"));
+  stage.add(KeySpec::sublist("Hand Back At Rest", handBackKeys(),
+                             "once nothing moves, run the rest of the stage on the implicit "
+                             "seepage path (fixed skeleton; the stage's conditions and "
+                             "Implicit Seepage settings)")
+                .when("Solver", {"explicit"}));
   stage.add(KeySpec::real("Hand Over Below Factor Of Safety", "-",
                           "end the stage at the first output whose factor of safety (deck "
                           "section Factor Of Safety) is below this, e.g. 1.0: the next stage "

@@ -511,9 +511,13 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
   }
   for (const auto& boundary : stage.entries("Boundary Conditions"))
     spec.boundaries.push_back(parseBoundary(boundary));
-  if (spec.solver == SolverKind::ImplicitSeepage)
+  parseStageAdditions(stage, spec);  // issue P4 (and P12's Hand Back At Rest)
+  if (spec.solver == SolverKind::ImplicitSeepage || spec.hand_back.enabled)
     spec.seepage = parseImplicitSeepage(stage.section("Implicit Seepage"));
-  parseStageAdditions(stage, spec);          // issue P4
+  else if (stage.has("Implicit Seepage"))
+    throw InputError("Stages/" + spec.name + "/Implicit Seepage",
+                     "in an explicit stage only with Hand Back At Rest (the settings of the "
+                     "stage's implicit rest)");
   parseFactorOfSafetyHandOver(stage, spec);  // issue P13
   parseStrengthReduction(stage, spec);       // issue P13
   return spec;

@@ -115,6 +115,16 @@ void parseStageAdditions(const DeckSection& section, StageSpec& stage) {
     stage.relaxation.kinetic_energy_ratio = relaxation.real("Kinetic Energy Ratio");
     stage.relaxation.window = relaxation.real("Window (s)");
   }
+  if (section.has("Hand Back At Rest")) {  // issue P12
+    const DeckSection hand_back = section.section("Hand Back At Rest");
+    stage.hand_back.enabled = true;
+    stage.hand_back.largest_speed = hand_back.real("Largest Speed (m/s)");
+    stage.hand_back.window = hand_back.real("Window (s)");
+    if (stage.output_interval <= 0 || stage.output_interval >= stage.hand_back.window)
+      throw InputError("Stages/" + stage.name + "/Hand Back At Rest/Window (s)",
+                       "expected a window longer than the stage's Output Interval (s) (the "
+                       "speed is tested at outputs; an output interval is needed)");
+  }
   const Real radians = kPi / 180.0;
   for (const auto& change : section.entries("Material Changes")) {
     MaterialChangeSpec spec;

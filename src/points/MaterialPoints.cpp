@@ -15,6 +15,7 @@ void MaterialPoints::allocate(int n) {
   velocity_liquid = View<Real* [kDim]>("velocity_liquid_p", n);
   affine_velocity_solid = View<Real* [kAffineComponents]>("affine_velocity_solid_p", n);
   affine_velocity_liquid = View<Real* [kAffineComponents]>("affine_velocity_liquid_p", n);
+  rest_reference = View<Real* [kDim]>("rest_reference_p", n);
   volume = View<Real*>("volume_p", n);
   initial_volume = View<Real*>("initial_volume_p", n);
   mass_solid = View<Real*>("mass_solid_p", n);

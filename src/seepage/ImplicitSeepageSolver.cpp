@@ -377,10 +377,11 @@ void ImplicitSeepageSolver::setBoundaryPlan(const SeepageBoundaryPlan& plan) {
   impl_->applyConditions(plan.at(impl_->time, impl_->time, impl_->settings.theta), false);
 }
 
-void ImplicitSeepageSolver::beginStage(const StageSpec& stage) {
+void ImplicitSeepageSolver::beginStage(const StageSpec& stage, Real table_origin) {
   setSettings(stage.seepage);
   setGravity(stage.gravity);
-  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage, impl_->time));
+  const Real origin = std::isnan(table_origin) ? impl_->time : table_origin;
+  setBoundaryPlan(seepageBoundaryPlan(impl_->mesh, impl_->points, stage, origin));
   projectPressureFromPoints();
 }
 

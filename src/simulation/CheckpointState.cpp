@@ -121,6 +121,7 @@ std::uintmax_t writeCheckpoint(const std::string& path, std::uint64_t deck_hash,
     out.put<Real>(time);
     out.put<Real>(energy);
   }
+  out.put<Real>(s.rest_window_start);  // (P12, format 8)
   out.put<std::int32_t>(s.results.grid_steps);
   out.put<std::int32_t>(s.results.points_file_count);
   out.put<std::int32_t>(s.results.points_steps);
@@ -174,6 +175,7 @@ void readCheckpoint(const std::string& path, std::uint64_t deck_hash, Checkpoint
     const Real time = in.get<Real>();
     s.relaxation.window.emplace_back(time, in.get<Real>());
   }
+  s.rest_window_start = in.get<Real>();  // (P12, format 8)
   s.results.grid_steps = in.get<std::int32_t>();
   s.results.points_file_count = in.get<std::int32_t>();
   s.results.points_steps = in.get<std::int32_t>();

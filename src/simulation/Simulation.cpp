@@ -28,6 +28,7 @@
 #include "argine/simulation/MaterialChanges.hpp"
 #include "argine/simulation/PhysicalPressureRange.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
+#include "argine/simulation/RestMonitor.hpp"
 #include "argine/simulation/RunGuards.hpp"
 #include "argine/simulation/Setup.hpp"
 #include "argine/simulation/StepFallReport.hpp"
@@ -202,13 +203,22 @@ void Simulation::runStage(const StageSpec& stage) {
     relaxation = std::make_unique<RelaxationMonitor>(stage.relaxation, solver_->time());
     relaxation_table = std::make_unique<MaterialTable>(deck_.materials);
   }
+  std::unique_ptr<RestMonitor> rest;  // (P12) Hand Back At Rest
+  if (stage.hand_back.enabled) rest = std::make_unique<RestMonitor>(stage.hand_back);
   // Output times are start + k * interval; the step is shortened to land on them exactly.
   const Real interval = stage.output_interval > 0 ? stage.output_interval : stage.duration;
-  if (!resumeStage(relaxation.get())) {  // (P8) else start and next output from the checkpoint
+  // (P8) else start and next output from the checkpoint
+  if (!resumeStage(relaxation.get(), rest.get())) {
     stage_start_ = solver_->time();
     next_output_ = stage_start_ + interval;
   }
   relaxation_ = relaxation.get();
+  rest_ = rest.get();
+  if (rest && !resumed) {  // (P12) the first window begins with the stage
+    markRestReference(points_);
+    rest->startWindow(stage_start_);
+  }
+  bool at_rest = false;  // (P12) the rest of the stage goes to the implicit path
   const Real start = stage_start_;
   const Real end = start + stage.duration;
   // Times within this tolerance of a target count as reaching it (round-off of sums of dt).
@@ -244,6 +254,12 @@ void Simulation::runStage(const StageSpec& stage) {
                           distributed() ? static_cast<int>(total_points_) : points_.count);
         break;
       }
+      if (rest && solver_->time() < end - tolerance && handsBackAtRest(stage, *rest)) {  // (P12)
+        progress_->update(summary_.steps, solver_->time(), dt,
+                          distributed() ? static_cast<int>(total_points_) : points_.count);
+        at_rest = true;
+        break;
+      }
     } else if (!deck_.probes.empty() && deck_.probes.interval > 0 &&
                solver_->time() >= next_probe_time_ - tolerance) {
       writeProbes();
@@ -268,6 +284,7 @@ void Simulation::runStage(const StageSpec& stage) {
     checkpointIfDue(true);  // (P8)
   }
   relaxation_ = nullptr;
+  rest_ = nullptr;
   if (relaxation && !relaxation->relaxed()) {
     char line[256];
     std::snprintf(line, sizeof line,
@@ -283,13 +300,48 @@ void Simulation::runStage(const StageSpec& stage) {
   logLiquidMadeInside(stage);
   logLowestFactorOfSafety(stage);  // (P13)
   progress_->endStage(summary_.steps, solver_->time(), dt);
+  if (at_rest) runRestOfStageImplicitly(stage, end);  // (P12)
+}
+
+// ---------------------------------------------------------------- back to implicit (P12)
+bool Simulation::handsBackAtRest(const StageSpec& stage, RestMonitor& rest) {
+  const Real now = solver_->time();
+  if (!rest.due(now)) return false;
+  Real motion = largestMotionSinceReference(points_);
+  if (distributed()) MPI_Allreduce(MPI_IN_PLACE, &motion, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  if (!rest.atRest(now, motion)) {
+    markRestReference(points_);  // a new window from this output
+    rest.startWindow(now);
+    return false;
+  }
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "stage '%s': at rest at t = %.6g s (no point moved more than %.3g m since t = "
+                "%.6g s: a mean speed below %.3g m/s): the rest of the stage, to t = %.6g s, on "
+                "the implicit seepage path",
+                stage.name.c_str(), now, motion, rest.windowStart(), stage.hand_back.largest_speed,
+                stage_start_ + stage.duration);
+  log(line);
+  return true;
+}
+
+void Simulation::runRestOfStageImplicitly(const StageSpec& stage, Real end) {
+  StageSpec rest = stage;
+  rest.solver = SolverKind::ImplicitSeepage;
+  rest.duration = end - solver_->time();
+  rest.material_changes.clear();  // applied when the stage began
+  rest.hand_over_below_factor_of_safety = 0;
+  rest.relaxation = {};
+  rest.hand_back = {};
+  // the stage's tables (heads, series, rain) count from the stage's start, not from now
+  runImplicitSeepageStage(rest, stage_start_);
 }
 
 // ---------------------------------------------------------------- implicit seepage (P5)
 // A fixed-skeleton seepage stage on the same points: the implicit solver advances to each
 // output time with its own adaptive step, then hands p_L, S_L, rho_L, k, M_L to the points,
 // from which the next stage (explicit or implicit) starts.
-void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
+void Simulation::runImplicitSeepageStage(const StageSpec& stage, Real table_origin) {
   applyStageMaterialChanges(stage);  // (P4) into deck_.materials, which the solver reads
   if (!initial_output_written_) {    // the t = 0 state (no explicit time step to report)
     initial_output_written_ = true;
@@ -304,7 +356,7 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage) {
   }
   ImplicitSeepageSolver seepage(mesh_, points_, deck_.materials);
   seepage.setTime(solver_->time());
-  seepage.beginStage(stage);
+  seepage.beginStage(stage, table_origin);
   const Real start = seepage.time();
   const Real end = start + stage.duration;
   const Real interval = stage.output_interval > 0 ? stage.output_interval : stage.duration;

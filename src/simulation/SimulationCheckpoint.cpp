@@ -23,6 +23,7 @@
 #include "argine/simulation/Checkpoint.hpp"
 #include "argine/simulation/MaterialChanges.hpp"
 #include "argine/simulation/RelaxationMonitor.hpp"
+#include "argine/simulation/RestMonitor.hpp"
 #include "argine/simulation/Simulation.hpp"
 
 namespace argine {
@@ -139,10 +140,11 @@ void Simulation::restoreFromCheckpoint() {
         "order)");
 }
 
-bool Simulation::resumeStage(RelaxationMonitor* relaxation) {
+bool Simulation::resumeStage(RelaxationMonitor* relaxation, RestMonitor* rest) {
   if (!resume_pending_) return false;
   resume_pending_ = false;
   if (relaxation && resume_->has_relaxation) relaxation->restore(resume_->relaxation);
+  if (rest) rest->startWindow(resume_->rest_window_start);  // (P12)
   return true;
 }
 
@@ -231,6 +233,7 @@ void Simulation::writeCheckpointNow(bool mid_stage) {
     s.has_relaxation = true;
     s.relaxation = relaxation_->state();
   }
+  if (mid_stage && rest_) s.rest_window_start = rest_->windowStart();  // (P12)
   s.results = results_->resumePoint();
   s.diagnostics_bytes = diagnostics_->bytes();
   s.boundary_flux_bytes = boundary_flux_ ? boundary_flux_->bytes() : 0;

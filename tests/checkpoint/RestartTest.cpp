@@ -23,6 +23,7 @@
 
 #include "../output/ExodusReadBack.hpp"
 #include "DrySlopeDeck.hpp"
+#include "WetColumnDeck.hpp"
 #include "argine/checkpoint/CheckpointFile.hpp"
 #include "argine/simulation/Checkpoint.hpp"
 
@@ -359,6 +360,37 @@ TEST_F(Restart, CheckpointAtAStageBoundaryAfterAnImplicitStage) {
   EXPECT_FALSE(state.mid_stage);
   const Outcome resumed = restart(killed, killed / "column.checkpoint");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  for (const auto& name : kExodusFiles) expectSameExodus(killed / name, reference_dir / name);
+  for (const char* name : {"column_diagnostics.csv", "column_boundary_flux.csv"})
+    EXPECT_EQ(readAll(killed / name), readAll(reference_dir / name)) << name;
+}
+
+// (P12) An explicit stage with Hand Back At Rest: a wet column under rain settles (local
+// damping); its windows of at least 0.05 s, judged at the outputs, begin at 0, 0.06 and 0.12 s,
+// and the last is at rest, so the rest of the stage goes to the implicit path at the 0.18 s
+// output (step ~7,660). The checkpoint of step 6000 (t ~ 0.14 s) lies inside that window: the
+// restart must carry its start and the points' rest_reference, or it would judge another
+// window and write other results.
+const std::string kHandBackDeck = test_decks::wetColumnDeck(
+    "0.3",
+    "      Hand Back At Rest: {Largest Speed (m/s): 1.0e-3, Window (s): 0.05}\n"
+    "      Implicit Seepage: {Initial Step (s): 0.01}\n",
+    "    Checkpoint: {Every Steps: 1000}\n");
+
+TEST_F(Restart, InsideTheWindowOfAHandBackAtRest) {
+  std::ofstream(deck_) << kHandBackDeck;
+  const fs::path reference_dir = reference();
+  const fs::path killed = killedAt(6500);
+  CheckpointState state;
+  state.points.allocate(60);
+  readCheckpoint((killed / "column.checkpoint").string(), fileHash(deck_.string()), state);
+  EXPECT_EQ(state.steps, 6000);
+  EXPECT_TRUE(state.mid_stage);
+  EXPECT_NEAR(state.rest_window_start, 0.12, 1e-12);
+  const Outcome resumed = restart(killed, killed / "column.checkpoint");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("stage 'settle': at rest at t = 0.18 s"), std::string::npos)
+      << resumed.output;
   for (const auto& name : kExodusFiles) expectSameExodus(killed / name, reference_dir / name);
   for (const char* name : {"column_diagnostics.csv", "column_boundary_flux.csv"})
     EXPECT_EQ(readAll(killed / name), readAll(reference_dir / name)) << name;

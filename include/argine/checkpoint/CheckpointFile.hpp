@@ -30,7 +30,7 @@ namespace argine {
 
 struct MaterialPoints;
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 7;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 8;
 inline constexpr std::size_t kCheckpointHeaderBytes = 48;
 
 /// FNV-1a 64-bit hash of `size` bytes, continuing from `hash`.

@@ -234,6 +234,16 @@ struct RelaxationSpec {
   Real window = 0.1;                 ///< (s) time the ratio must stay low
 };
 
+/// `Hand Back At Rest` of an explicit stage (P12): once no point has moved more than
+/// `largest_speed` times the window's length over a window of at least `window`, the rest of
+/// the stage runs on the implicit seepage path (fixed skeleton, the stage's conditions and
+/// `Implicit Seepage` settings; simulation/RestMonitor.hpp).
+struct HandBackSpec {
+  bool enabled = false;
+  Real largest_speed = 0;  ///< (m/s)
+  Real window = 0;         ///< (s)
+};
+
 /// New values of some parameters of one material, applied when the stage starts (e.g. the
 /// cohesion falling from 20 to 2 kPa). Unset values keep the material's current ones.
 struct MaterialChangeSpec {
@@ -319,8 +329,10 @@ struct StageSpec {
   bool reset_displacements = false;  ///< zero the displacements at the start of the stage
   TimeStepSpec time_step;
   std::vector<BoundarySpec> boundaries;
-  ImplicitSeepageSpec seepage;                       ///< used by `implicit seepage` stages only
-  RelaxationSpec relaxation;                         ///< optional early end (issue P4)
+  /// used by `implicit seepage` stages, and by explicit ones after a hand-back (P12)
+  ImplicitSeepageSpec seepage;
+  RelaxationSpec relaxation;  ///< optional early end (issue P4)
+  HandBackSpec hand_back;     ///< (P12) explicit stages: the rest implicit once at rest
   std::vector<MaterialChangeSpec> material_changes;  ///< applied at the stage start (P4)
   /// (P13) end the stage at the first output whose factor of safety is below this; 0: never
   Real hand_over_below_factor_of_safety = 0;

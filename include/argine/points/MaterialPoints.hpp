@@ -42,6 +42,9 @@ struct MaterialPoints {
   /// with the FLIP transfer (TransferScheme, transfer/TwoPhaseTransfer.hpp).
   View<Real* [kAffineComponents]> affine_velocity_solid;
   View<Real* [kAffineComponents]> affine_velocity_liquid;
+  /// (P12) the displacement at the start of the current window of an explicit stage's `Hand
+  /// Back At Rest` (m; simulation/RestMonitor.hpp); unread otherwise.
+  View<Real* [kDim]> rest_reference;
 
   // Geometry and phase masses
   View<Real*> volume;          ///< current volume V (m^3 per metre thickness in 2D)

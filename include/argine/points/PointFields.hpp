@@ -16,7 +16,7 @@ namespace argine {
 #define ARGINE_MATERIAL_POINT_FIELDS(FIELD)                                             \
   FIELD(id) FIELD(element) FIELD(local) FIELD(position) FIELD(initial_position)          \
   FIELD(material) FIELD(displacement) FIELD(velocity_solid) FIELD(velocity_liquid)       \
-  FIELD(affine_velocity_solid) FIELD(affine_velocity_liquid)                              \
+  FIELD(affine_velocity_solid) FIELD(affine_velocity_liquid) FIELD(rest_reference)        \
   FIELD(volume) FIELD(initial_volume) FIELD(mass_solid) FIELD(mass_liquid)               \
   FIELD(porosity) FIELD(separation) FIELD(pressure_liquid) FIELD(density_liquid)        \
   FIELD(saturation)                                                                       \

@@ -35,6 +35,7 @@
 /// partitioned (only the point loop's range and the import target change).
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,8 +99,10 @@ class ImplicitSeepageSolver {
 
   /// Starts a stage: its settings, gravity and boundary conditions (seepageBoundaryPlan on the
   /// points' elements now),
-  /// the nodal p_L from the points (projectPressureFromPoints).
-  void beginStage(const StageSpec& stage);
+  /// the nodal p_L from the points (projectPressureFromPoints). `table_origin` (s): the time
+  /// the stage's tables count from; NaN: now (the rest of an explicit stage, P12: its start).
+  void beginStage(const StageSpec& stage,
+                  Real table_origin = std::numeric_limits<Real>::quiet_NaN());
 
   void setSettings(const ImplicitSeepageSpec& settings);
   void setGravity(Real gravity);  ///< magnitude (m/s^2), acting in -y

@@ -36,6 +36,9 @@ struct CheckpointState {
   ExplicitTwoPhaseSolver::ResumeState solver;  ///< time, step diagnostics, dt controller
   bool has_relaxation = false;                 ///< the stage watches for rest (mid_stage)
   RelaxationMonitor::State relaxation;
+  /// (P12) RestMonitor::windowStart of the stage's Hand Back At Rest (the points carry their
+  /// rest_reference)
+  Real rest_window_start = 0;
   // ---- where the output files stand (later steps/rows of a killed run are dropped)
   ResultsResume results;
   std::uint64_t diagnostics_bytes = 0;

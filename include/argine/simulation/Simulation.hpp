@@ -5,6 +5,7 @@
 /// ExaMPM five lines: choose dt, step, advance time, write when due, report progress.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ class ProgressReporter;
 class ProbeWriter;
 class RunGuards;
 class RelaxationMonitor;
+class RestMonitor;
 class MaterialTable;
 struct CheckpointState;
 
@@ -77,7 +79,14 @@ class Simulation {
 
  private:
   void runStage(const StageSpec& stage);
-  void runImplicitSeepageStage(const StageSpec& stage);  ///< implicit seepage (P5)
+  /// implicit seepage (P5); `table_origin` (s): the time its tables count from (NaN: now)
+  void runImplicitSeepageStage(const StageSpec& stage,
+                               Real table_origin = std::numeric_limits<Real>::quiet_NaN());
+  /// (P12) whether the explicit stage's slide has stopped at this output (Hand Back At
+  /// Rest; all ranks); logs it.
+  bool handsBackAtRest(const StageSpec& stage, RestMonitor& rest);
+  /// (P12) the rest of `stage`, from now to `end` (s), on the implicit seepage path.
+  void runRestOfStageImplicitly(const StageSpec& stage, Real end);
   void logTimeStep(const StageSpec& stage, const TimeStepChoice& choice) const;
   /// Adds the last step's kinetic and stored elastic energy (all ranks) to `relaxation`;
   /// true once relaxed.
@@ -168,8 +177,9 @@ class Simulation {
   // ---- checkpoint / restart (P8; SimulationCheckpoint.cpp, doc/checkpoints.md)
   void readRestartCheckpoint();  ///< options_.restart -> resume_ (InputError naming the file)
   void restoreFromCheckpoint();  ///< after the writers reopened: materials, points, solver
-  bool resumeStage(RelaxationMonitor* relaxation);  ///< true once, in the checkpoint's stage
-  void checkpointIfDue(bool mid_stage);             ///< after a step / at a stage's end
+  /// true once, in the checkpoint's stage
+  bool resumeStage(RelaxationMonitor* relaxation, RestMonitor* rest);
+  void checkpointIfDue(bool mid_stage);  ///< after a step / at a stage's end
   void writeCheckpointIfDue(bool mid_stage);
   void writeCheckpointNow(bool mid_stage);
   /// The bookkeeping after a checkpoint (`bytes` written; 0 on ranks that do not write).
@@ -180,6 +190,7 @@ class Simulation {
   Real stage_start_ = 0;                     ///< (s) its start time
   Real next_output_ = 0;                     ///< (s) its next output time
   RelaxationMonitor* relaxation_ = nullptr;  ///< its relaxation monitor, if any
+  RestMonitor* rest_ = nullptr;              ///< (P12) its Hand Back At Rest monitor, if any
   std::uint64_t deck_hash_ = 0;
   double last_checkpoint_wall_ = 0;     ///< (s, steady clock) run start or last checkpoint
   long long checkpoint_step_mark_ = 0;  ///< steps / Every Steps at the last checkpoint
