@@ -304,24 +304,7 @@ TEST_F(Restart, KilledInTheSecondStageReappliesItsMaterialChange) {
 // An implicit seepage stage (12 implicit steps, not checkpointed inside) and an explicit one:
 // the step count passes 10 during the implicit stage, so a checkpoint is written at the stage
 // boundary ("before 'settle'"); killed at step 17, before the next one (step 20).
-const char* kHybridDeck = R"(argine:
-  Title: restart test, implicit then explicit
-  Mesh:
-    Generate: {Type: rectangle, Element: tri3, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right (m): [0.1, 1.0], Block: soil}
-  Materials:
-    soil:
-      Block: soil
-      Points Per Element: 3
-      Phase Model: unsaturated
-      Porosity: 0.4
-      Solid Density (kg/m3): 2700
-      Solid: {Model: linear elastic, Young's Modulus (Pa): 1.0e7, Poisson's Ratio: 0.0}
-      Liquid: {Density (kg/m3): 1000, Bulk Modulus (Pa): 1.0e7, Viscosity (Pa s): 1.0e-3}
-      Retention: {Model: van genuchten, Reference Pressure (Pa): 3000, Lambda: 0.7, Minimum Saturation: 0.125, Maximum Saturation: 1.0}
-      Conductivity: {Model: constant, Intrinsic Permeability (m2): 1.0e-11}
-      Initial State: {Liquid Pressure (Pa): -2000, Vertical Effective Stress (Pa): 0.0, K0: 1.0}
-  Stages:
-    rain:
+const std::string kHybridDeck = test_decks::wetColumnDeckHead() + R"(    rain:
       Solver: implicit seepage
       Duration (s): 20
       Gravity (m/s2): 9.81

@@ -10,10 +10,10 @@
 
 namespace argine::test_decks {
 
-inline std::string wetColumnDeck(const std::string& duration, const std::string& stage_extra,
-                                 const std::string& output_extra = "") {
+/// The deck up to and including `  Stages:` (RestartTest's hybrid deck adds its own stages).
+inline std::string wetColumnDeckHead() {
   return R"(argine:
-  Title: a wet column comes to rest under rain
+  Title: a wet column under rain
   Mesh:
     Generate: {Type: rectangle, Element: tri3, Element Size (m): 0.1, Lower Left (m): [0.0, 0.0], Upper Right (m): [0.1, 1.0], Block: soil}
   Materials:
@@ -29,7 +29,12 @@ inline std::string wetColumnDeck(const std::string& duration, const std::string&
       Conductivity: {Model: constant, Intrinsic Permeability (m2): 1.0e-11}
       Initial State: {Liquid Pressure (Pa): -2000, Vertical Effective Stress (Pa): 0.0, K0: 1.0}
   Stages:
-    settle:
+)";
+}
+
+inline std::string wetColumnDeck(const std::string& duration, const std::string& stage_extra,
+                                 const std::string& output_extra = "") {
+  return wetColumnDeckHead() + R"(    settle:
       Solver: explicit
       Duration (s): )" +
          duration + R"(
