@@ -1,10 +1,15 @@
 #include "argine/physics/VolumetricAveraging.hpp"
 
+#include <Kokkos_ScatterView.hpp>
+
+#include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/PointRates.hpp"
+#include "argine/transfer/PointShapes.hpp"
 
 namespace argine {
 
@@ -31,6 +36,16 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
   }
   strain_ = strain.any();
   pressure_ = pressure.any();
+  all_nodal_ = strain_;
+  for (int m = 0; m < table.count(); ++m) {
+    const PointMaterial& material = table.host(m);
+    const auto mode = material.locking.volumetric_strain;
+    all_nodal_ =
+        all_nodal_ && (mode == IncrementAveraging::None ||
+                       (mode == IncrementAveraging::Nodal && carriesLiquid(material.phase)));
+  }
+  if (all_nodal_)
+    nodal_sums_ = Kokkos::View<Real * [kChannels + 1], MemSpace>("averaging_nodal_sums", nodes);
   if (strain_) increments_.allocateSums(kChannels, strain, elements, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, elements, nodes);
 }
@@ -40,6 +55,8 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
                                                   const PointShapes& shapes,
                                                   const ActiveNodes& active, PointRates& rates) {
   if (!strain_) return;
+  if (all_nodal_ && !increments_.compensated())
+    return averageNodalChannelsTogether(table, points, shapes, active, rates);
   const int count = points.count;
   increments_.fitPoints(count);
   const auto materials_m = table.materials();
@@ -90,6 +107,122 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
         // dt div v_L = averaged relative divergence + averaged d eps_vol.
         if (carriesLiquid(materials_m(material_p(p)).phase)) divergence_p(p) += averaged;
       });
+}
+
+namespace {
+
+/// Point p's three increments in the order of VolumetricAveraging's channels: dt div(c w),
+/// dt div(v_L - v_S) - d eps_vol and d eps_vol (averageStrainIncrements' "in" kernel).
+KOKKOS_INLINE_FUNCTION void channelValues(const PointRates& rates, int p, Real q[3]) {
+  const Real strain = rates.strain_increment_p(p, XX) + rates.strain_increment_p(p, YY);
+  q[0] = rates.content_flux_divergence_increment_p(p);
+  q[1] = rates.liquid_divergence_increment_p(p) - strain;
+  q[2] = strain;
+}
+
+/// The nodal sums of the three channels and their shared weight (zeroed at the active nodes
+/// first): per node the adds of scatterAverageSums, in point order.
+template <class Family, class Sums>
+void scatterNodalChannels(const MaterialPoints& points, const PointShapes& shapes,
+                          Kokkos::View<const int*, MemSpace> nodal_m, const PointRates& rates,
+                          Sums sums) {  // (contribute: not const)
+  const auto element_p = points.element;
+  const auto local_p = points.local;
+  const auto material_p = points.material;
+  const auto volume_p = points.volume;
+  auto scatter = Kokkos::Experimental::create_scatter_view(sums);
+  Kokkos::parallel_for(
+      "averaging_nodal_channels_scatter", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        if (element_p(p) < 0 || nodal_m(material_p(p)) == 0) return;
+        const Real w = volume_p(p);
+        Real q[3];
+        channelValues(rates, p, q);
+        Real wq[3];
+        for (int c = 0; c < 3; ++c) wq[c] = w * q[c];
+        typename Family::Record record;
+        const auto& shape = Family::of(shapes, p, element_p, local_p, record);
+        auto access = scatter.access();
+        for (int a = 0; a < Family::kNodes; ++a) {
+          const int i = shape.node[a];
+          const Real N = shape.value[a];
+          for (int c = 0; c < 3; ++c) access(i, c) += N * wq[c];
+          access(i, 3) += N * w;
+        }
+      });
+  Kokkos::Experimental::contribute(sums, scatter);
+}
+
+/// The nodal averages back at the points and into their increments (averageStrainIncrements'
+/// gather and "out" kernel): d eps_xx, d eps_yy shifted by half the change of d eps_vol each,
+/// dt div(c w) and dt div(v_L - v_S) = averaged relative divergence + averaged d eps_vol.
+template <class Family, class Averages>
+void gatherNodalChannels(const MaterialPoints& points, const PointShapes& shapes,
+                         Kokkos::View<const int*, MemSpace> nodal_m, const Averages& averages,
+                         const PointRates& rates) {
+  const auto element_p = points.element;
+  const auto local_p = points.local;
+  const auto material_p = points.material;
+  Kokkos::parallel_for(
+      "averaging_nodal_channels_gather", Kokkos::RangePolicy<ExecSpace>(0, points.count),
+      KOKKOS_LAMBDA(const int p) {
+        if (element_p(p) < 0 || nodal_m(material_p(p)) == 0) return;
+        typename Family::Record record;
+        const auto& shape = Family::of(shapes, p, element_p, local_p, record);
+        Real average[3];
+        for (int c = 0; c < 3; ++c) {
+          average[c] = 0;
+          for (int a = 0; a < Family::kNodes; ++a) {
+            // a node of no weight may have no sums at all (a grid family's stencil corner)
+            if (shape.value[a] == 0) continue;
+            average[c] += shape.value[a] * averages(shape.node[a], c);
+          }
+        }
+        const Real shift =
+            average[2] - (rates.strain_increment_p(p, XX) + rates.strain_increment_p(p, YY));
+        rates.content_flux_divergence_increment_p(p) = average[0];
+        rates.strain_increment_p(p, XX) += shift / 2;
+        rates.strain_increment_p(p, YY) += shift / 2;
+        rates.liquid_divergence_increment_p(p) = average[1] + average[2];
+      });
+}
+
+}  // namespace
+
+void VolumetricAveraging::averageNodalChannelsTogether(const MaterialTable& table,
+                                                       const MaterialPoints& points,
+                                                       const PointShapes& shapes,
+                                                       const ActiveNodes& active,
+                                                       PointRates& rates) {
+  // per material: 1 where its points average (nodal, liquid-carrying), 0 where none
+  if (static_cast<int>(nodal_m_.extent(0)) != table.count()) {
+    nodal_m_ = Kokkos::View<int*, MemSpace>("averaging_nodal_m", table.count());
+    auto host = Kokkos::create_mirror_view(nodal_m_);
+    for (int m = 0; m < table.count(); ++m)
+      host(m) = table.host(m).locking.volumetric_strain == IncrementAveraging::Nodal ? 1 : 0;
+    Kokkos::deep_copy(nodal_m_, host);
+  }
+  const auto nodes = active.nodes();
+  const auto sums = nodal_sums_;
+  Kokkos::parallel_for(
+      "averaging_nodal_channels_zero", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        for (int k = 0; k <= kChannels; ++k) sums(nodes(j), k) = 0;
+      });
+  withShapeFamily(shapes, [&](auto family) {
+    scatterNodalChannels<decltype(family)>(points, shapes, nodal_m_, rates, sums);
+  });
+  // Several ranks: a shared node also has the other rank's points in its sums.
+  if (exchange_) exchange_->sum({nodalField(sums)});
+  Kokkos::parallel_for(
+      "averaging_nodal_channels_divide", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
+      KOKKOS_LAMBDA(const int j) {
+        const int i = nodes(j);
+        for (int c = 0; c < kChannels; ++c) sums(i, c) /= sums(i, kChannels);
+      });
+  withShapeFamily(shapes, [&](auto family) {
+    gatherNodalChannels<decltype(family)>(points, shapes, nodal_m_, sums, rates);
+  });
 }
 
 void VolumetricAveraging::rememberPressures(const MaterialPoints& points) {

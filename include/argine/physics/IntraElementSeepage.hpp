@@ -95,7 +95,15 @@ class IntraElementSeepage {
   void compensateSums(bool on) { heads_.compensate(on); }
 
  private:
+  /// Every exchanging material's patch the element (the levee decks), plain sums: the
+  /// points add w phi and w to their element's sums as they compute them, and take the
+  /// element's centre value as they exchange: the sums and quotients of averagePointValues
+  /// in the same point order, so the same bits, in two passes over the points instead of
+  /// four.
+  void applyOverElements(const MaterialTable& table, const MaterialPoints& points,
+                         PointRates& rates, Real dt, Real gravity);
   bool active_ = false;
+  bool element_patches_ = false;       ///< every exchanging material's patch is its element
   NodalExchange* exchange_ = nullptr;  ///< several ranks: completes the nodal patch's sums
   /// One channel, the material's patch: weight w_p (0: not exchanged), value phi_p, then
   /// the centre value.

@@ -73,7 +73,21 @@ class VolumetricAveraging {
   /// The channels of increments_: the three increments of the step averaged together (one
   /// exchange on several ranks).
   enum Channel : int { kFluxDivergence = 0, kRelativeDivergence, kVolumetricStrain, kChannels };
+  /// The common case, every point's three channels nodal or none (the levee decks): the
+  /// channels share one weight column, and the increments are read and the averages put back
+  /// by the scatter and the gather themselves (no per-point scratch): the same sums and
+  /// quotients as averagePointValues, so the same bits, with two passes over the points
+  /// instead of four and four node columns instead of six.
+  void averageNodalChannelsTogether(const MaterialTable& table, const MaterialPoints& points,
+                                    const PointShapes& shapes, const ActiveNodes& active,
+                                    PointRates& rates);
   bool strain_ = false;
+  /// Every material's volumetric strain averaging nodal on a liquid-carrying phase, or none.
+  bool all_nodal_ = false;
+  /// all_nodal_: (node, c) sum N V q_c for the three channels, (node, kChannels) sum N V; after
+  /// the division (node, c) holds channel c's average.
+  Kokkos::View<Real * [kChannels + 1], MemSpace> nodal_sums_;
+  Kokkos::View<int*, MemSpace> nodal_m_;  ///< all_nodal_: 1 for a material that averages
   bool pressure_ = false;
   NodalExchange* exchange_ = nullptr;           ///< several ranks: completes the node sums
   AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
