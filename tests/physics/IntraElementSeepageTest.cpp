@@ -16,6 +16,8 @@
 #include "argine/physics/IntraElementSeepage.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
+#include "argine/physics/PointLiquidExchange.hpp"
+#include "argine/physics/PointValueAveraging.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
@@ -275,6 +277,50 @@ TEST(IntraElementSeepage, NodalPatchReachesAPointAloneInItsCell) {
       EXPECT_NEAR(change[q], weight[q] * (target - pressure(q)), 1e-10 * scale) << "point " << q;
     }
     EXPECT_LT(change[scene.lone], -0.1 * scale);  // it drains into its neighbours
+  }
+}
+
+// The element patch exchanges in its own two kernels (IntraElementSeepage::applyOverElements):
+// the same as the generic averaging of the heads (averagePointValues, element mode) followed
+// by the exchange, bit for bit, with gravity and unequal pressures in both elements.
+TEST(IntraElementSeepage, ElementPatchEqualsTheGenericAveragingBitForBit) {
+  TwoTriangles scene;
+  scene.setPressure(
+      [](int q, Real y) { return -4000.0 + 2500.0 * std::sin(1.0 + 3 * q) - 9810 * y; });
+  const Real dt = 2e-4, gravity = 9.81;
+  const std::vector<Real> change = scene.massChanges(dt, gravity);
+
+  const PointMaterial& material = scene.material();
+  const int n = scene.points.count;
+  AveragingScratch heads;
+  AveragingUse use;
+  use.add(kAverageElement);
+  heads.allocateSums(1, use, scene.mesh.numElements(), scene.mesh.numNodes());
+  heads.fitPoints(n);
+  auto mode = Kokkos::create_mirror_view(heads.mode_pc);
+  auto value = Kokkos::create_mirror_view(heads.value_pc);
+  auto weight = Kokkos::create_mirror_view(heads.weight_p);
+  const auto pressure = hostCopy(scene.points.pressure_liquid);
+  const auto position = hostCopy(scene.points.position);
+  const auto conductivity = hostCopy(scene.points.conductivity);
+  const auto volume = hostCopy(scene.points.volume);
+  std::vector<Real> own(n);
+  for (int q = 0; q < n; ++q) {
+    weight(q) = starExchangeWeight(pointDarcyConductance(conductivity(q)), scene.storage(q), dt);
+    mode(q, 0) = weight(q) > 0 ? kAverageElement : kAverageNone;
+    own[q] = piezometricPressure(material, pressure(q), position(q, 1), gravity);
+    value(q, 0) = own[q];
+  }
+  Kokkos::deep_copy(heads.mode_pc, mode);
+  Kokkos::deep_copy(heads.value_pc, value);
+  Kokkos::deep_copy(heads.weight_p, weight);
+  averagePointValues(scene.points, scene.shapes, scene.active, heads, nullptr);
+  Kokkos::deep_copy(value, heads.value_pc);
+  for (int q = 0; q < n; ++q) {
+    const Real mass_change = weight(q) * (value(q, 0) - own[q]);
+    const Real flux = 0.0 - mass_change / volume(q);  // addPointLiquidMassChange, complete form
+    EXPECT_EQ(change[q], -volume(q) * flux) << "point " << q;
+    EXPECT_NE(change[q], 0.0) << "point " << q;
   }
 }
 
