@@ -69,6 +69,7 @@ struct ImplicitSeepageSolver::Impl {
   // The last accepted step and its nodal increments (the adaptive step's time error).
   Real last_step = 0;
   std::vector<Real> last_increment;
+  Real accepted_step = 0;  ///< the length of the last converged step (0: none yet)
   SeepageTotals totals;
 
   // Per unknown: prescribed pressure, supply (kg/s per m), switchable, held at p = 0.
@@ -614,6 +615,7 @@ void ImplicitSeepageSolver::advanceTo(Real end) {
       s.next_step = std::max(0.5 * dt, s.settings.min_step);
       continue;
     }
+    s.accepted_step = dt;
     if (!s.settings.adaptive) continue;
     // The time error needs the previous step's nodal rate (SeepageStepControl.hpp).
     increment.resize(s.p.size());
@@ -696,6 +698,9 @@ void ImplicitSeepageSolver::setTime(Real time) {
 }
 Real ImplicitSeepageSolver::nextStep() const {
   return impl_->next_step;
+}
+Real ImplicitSeepageSolver::lastAcceptedStep() const {
+  return impl_->accepted_step;
 }
 Real ImplicitSeepageSolver::liquidMass() const {
   return impl_->pointsLiquidMass(impl_->p);

@@ -376,6 +376,7 @@ void Simulation::runImplicitSeepageStage(const StageSpec& stage, Real table_orig
     // The run's liquid bookkeeping (boundary-flux CSV, mass-balance guard) goes on through
     // the implicit stage: its stored mass and its inflow through all conditions.
     implicit_liquid_mass_ = seepage.liquidMass();
+    implicit_time_step_ = seepage.lastAcceptedStep();
     flux_all_nodes_cumulative_ +=
         (seepage.totals().inflow - inflow_counted) / solver_->referenceLiquidDensity();
     inflow_counted = seepage.totals().inflow;
@@ -454,23 +455,31 @@ void Simulation::writeDiagnostics(const MaterialPoints& points) {
   if (!diagnostics_) return;
   const Real unphysical = static_cast<Real>(countUnphysicalPressures(points));
   const auto& d = solver_->diagnostics();
-  if (d.step > 0) {
+  const bool implicit = implicit_liquid_mass_ >= 0;  // the implicit path holds the state
+  if (d.step > 0 && !implicit) {
     diagnostics_->writeRow({solver_->time(), d.time_step, d.kinetic_energy_solid,
                             d.kinetic_energy_liquid, d.liquid_mass,
                             static_cast<Real>(d.lost_points), unphysical});
     return;
   }
   // Before the first step the solver has no step sums: take them from the points, and the
-  // step the first stage is about to take (P4: a meaningful t = 0 row).
+  // step the first stage is about to take (P4: a meaningful t = 0 row). On the implicit
+  // seepage path: its last step, its liquid mass, and no kinetic energy (a fixed skeleton
+  // and Darcy flow without inertia; the points keep the velocities of the last explicit
+  // step for the next one, which are not a motion of this stage).
   const PointTotals totals = sumPointTotals(points);
   const MaterialPoints pts = points;
   int lost = 0;
   Kokkos::parallel_reduce(
       "count_lost_points", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p, int& sum) { sum += pts.element(p) < 0 ? 1 : 0; }, lost);
-  diagnostics_->writeRow({solver_->time(), initial_time_step_, totals.kinetic_energy_solid,
-                          totals.kinetic_energy_liquid, totals.liquid_mass, static_cast<Real>(lost),
-                          unphysical});
+  if (implicit)
+    diagnostics_->writeRow({solver_->time(), implicit_time_step_, 0.0, 0.0, implicit_liquid_mass_,
+                            static_cast<Real>(lost), unphysical});
+  else
+    diagnostics_->writeRow({solver_->time(), initial_time_step_, totals.kinetic_energy_solid,
+                            totals.kinetic_energy_liquid, totals.liquid_mass,
+                            static_cast<Real>(lost), unphysical});
 }
 
 int Simulation::countUnphysicalPressures(const MaterialPoints& points) {

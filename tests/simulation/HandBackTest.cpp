@@ -6,7 +6,9 @@
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "WetColumnDeck.hpp"
@@ -103,7 +105,24 @@ TEST(HandBackDeck, KeysAndTheirChecks) {
 struct ColumnRun {
   MaterialPoints points;
   std::vector<std::string> log;
+  std::filesystem::path dir;  ///< its output folder
 };
+
+/// The rows of a CSV file with a header line, as numbers.
+std::vector<std::vector<Real>> csvRows(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // the header
+  std::vector<std::vector<Real>> rows;
+  while (std::getline(in, line)) {
+    std::vector<Real> row;
+    std::stringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
 
 ColumnRun runColumn(const std::string& text, const std::string& folder) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / folder;
@@ -114,7 +133,7 @@ ColumnRun runColumn(const std::string& text, const std::string& folder) {
   options.quiet = true;
   Simulation simulation(parseDeck(*Teuchos::getParametersFromYamlString(text), ""), options);
   simulation.run();
-  return {simulation.points(), simulation.stageLog()};
+  return {simulation.points(), simulation.stageLog(), dir};
 }
 
 Real totalLiquidMass(const MaterialPoints& points) {
@@ -157,6 +176,30 @@ TEST(HandBackRun, TheRestOfTheStageSoaksTheRestingColumnOnTheFixedSkeleton) {
   // stage (the top stays unsaturated, so none runs off).
   const Real rain = 1e-4 * 0.1 * 1000 * (0.4 - at_rest);
   EXPECT_NEAR(totalLiquidMass(back.points) - totalLiquidMass(until.points), rain, 1e-9);
+
+  // The diagnostics rows of the implicit rest: its own step (the explicit one is below 1e-3
+  // s here), no kinetic energy (fixed skeleton, no inertia), its liquid mass; the explicit
+  // rows before carry the explicit step and the settling column's motion.
+  // Columns: time, time_step, kinetic_energy_solid, kinetic_energy_liquid, liquid_mass, ...
+  const auto rows = csvRows(back.dir / "column_diagnostics.csv");
+  int implicit_rows = 0, moving_rows = 0;
+  for (const auto& row : rows) {
+    ASSERT_GE(row.size(), 5u);
+    if (row[0] <= at_rest + 1e-9) {
+      if (row[0] > 0) {
+        EXPECT_LT(row[1], 1e-3) << "explicit row at t = " << row[0];
+      }
+      if (row[2] > 0) ++moving_rows;
+      continue;
+    }
+    ++implicit_rows;
+    EXPECT_GE(row[1], 1e-3) << "implicit row at t = " << row[0];
+    EXPECT_EQ(row[2], 0.0) << "implicit row at t = " << row[0];
+    EXPECT_EQ(row[3], 0.0) << "implicit row at t = " << row[0];
+  }
+  EXPECT_GT(moving_rows, 3);
+  EXPECT_GT(implicit_rows, 3);
+  EXPECT_NEAR(rows.back()[4], totalLiquidMass(back.points), 1e-9 * totalLiquidMass(back.points));
 
   // Without the key the stage stays explicit to its end.
   const ColumnRun explicit_only = runColumn(columnDeck(0.4, ""), "argine_hand_back_none");

@@ -139,6 +139,8 @@ class ImplicitSeepageSolver {
   void setTime(Real time);
   /// The step advanceTo will try next (s).
   Real nextStep() const;
+  /// The length of the last step advanceTo took and accepted (s; 0 before the first).
+  Real lastAcceptedStep() const;
   /// Liquid mass of the liquid-carrying points at the current nodal p_L (kg/m).
   Real liquidMass() const;
   const SeepageTotals& totals() const;

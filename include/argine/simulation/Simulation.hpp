@@ -150,6 +150,7 @@ class Simulation {
   std::vector<std::string> stage_log_;   ///< (P4)
   bool initial_output_written_ = false;  ///< (P4) t = 0 written after the first beginStage
   Real next_probe_time_ = 0;             ///< (P4)
+  Real implicit_time_step_ = 0;          ///< the implicit path's last step, for its rows
   Real initial_time_step_ = 0;           ///< (P4) the first stage's first dt, for the t = 0 row
   RunSummary summary_;
   std::unique_ptr<RunGuards> guards_;  ///< (P8)
