@@ -321,12 +321,8 @@ const std::string kHybridDeck = test_decks::wetColumnDeckHead() + R"(    rain:
       Gravity (m/s2): 9.81
       Local Damping: 0.1
       Output Interval (s): 0.001
-      Boundary Conditions:
-        base: {Type: solid fixity, Node Set: bottom, Direction: both}
-        left: {Type: solid fixity, Node Set: left, Direction: x}
-        right: {Type: solid fixity, Node Set: right, Direction: x}
-        rain: {Type: infiltration, Side Set: top, Flux (m/s): 1.0e-4}
-  Output:
+)" + test_decks::wetColumnExplicitConditions() +
+                                R"(  Output:
     Name: column
     Checkpoint: {Every Steps: 10}
 )";

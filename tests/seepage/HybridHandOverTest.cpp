@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "PointSums.hpp"
 #include "SeepageScenes.hpp"
 #include "argine/physics/ExplicitTwoPhaseSolver.hpp"
 
@@ -18,13 +19,6 @@ BoundarySpec sealed(const std::string& set) {
   spec.kind = BoundaryKind::LiquidFixity;
   spec.side_set = set;
   return spec;
-}
-
-Real totalLiquidMass(const MaterialPoints& points) {
-  const auto mass = test::hostCopy(points.mass_liquid);
-  Real total = 0;
-  for (int i = 0; i < points.count; ++i) total += mass(i);
-  return total;
 }
 
 TEST(HybridHandOver, ExplicitStageStartsFromTheImplicitStateAndKeepsItsLiquidMass) {

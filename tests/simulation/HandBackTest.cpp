@@ -6,11 +6,11 @@
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 
+#include "CsvRows.hpp"
+#include "PointSums.hpp"
 #include "WetColumnDeck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
@@ -108,22 +108,6 @@ struct ColumnRun {
   std::filesystem::path dir;  ///< its output folder
 };
 
-/// The rows of a CSV file with a header line, as numbers.
-std::vector<std::vector<Real>> csvRows(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // the header
-  std::vector<std::vector<Real>> rows;
-  while (std::getline(in, line)) {
-    std::vector<Real> row;
-    std::stringstream fields(line);
-    std::string field;
-    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 ColumnRun runColumn(const std::string& text, const std::string& folder) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / folder;
   std::filesystem::remove_all(dir);
@@ -134,13 +118,6 @@ ColumnRun runColumn(const std::string& text, const std::string& folder) {
   Simulation simulation(parseDeck(*Teuchos::getParametersFromYamlString(text), ""), options);
   simulation.run();
   return {simulation.points(), simulation.stageLog(), dir};
-}
-
-Real totalLiquidMass(const MaterialPoints& points) {
-  const auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.mass_liquid);
-  Real sum = 0;
-  for (int p = 0; p < points.count; ++p) sum += m(p);
-  return sum;
 }
 
 TEST(HandBackRun, TheRestOfTheStageSoaksTheRestingColumnOnTheFixedSkeleton) {
@@ -181,7 +158,7 @@ TEST(HandBackRun, TheRestOfTheStageSoaksTheRestingColumnOnTheFixedSkeleton) {
   // s here), no kinetic energy (fixed skeleton, no inertia), its liquid mass; the explicit
   // rows before carry the explicit step and the settling column's motion.
   // Columns: time, time_step, kinetic_energy_solid, kinetic_energy_liquid, liquid_mass, ...
-  const auto rows = csvRows(back.dir / "column_diagnostics.csv");
+  const auto rows = readCsvRows((back.dir / "column_diagnostics.csv").string());
   int implicit_rows = 0, moving_rows = 0;
   for (const auto& row : rows) {
     ASSERT_GE(row.size(), 5u);

@@ -32,6 +32,17 @@ inline std::string wetColumnDeckHead() {
 )";
 }
 
+/// The explicit stage's conditions: the column fixed at its base, rollers on its sides, the
+/// rain on its top (whole lines, indented for a stage).
+inline std::string wetColumnExplicitConditions() {
+  return R"(      Boundary Conditions:
+        base: {Type: solid fixity, Node Set: bottom, Direction: both}
+        left: {Type: solid fixity, Node Set: left, Direction: x}
+        right: {Type: solid fixity, Node Set: right, Direction: x}
+        rain: {Type: infiltration, Side Set: top, Flux (m/s): 1.0e-4}
+)";
+}
+
 inline std::string wetColumnDeck(const std::string& duration, const std::string& stage_extra,
                                  const std::string& output_extra = "") {
   return wetColumnDeckHead() + R"(    settle:
@@ -42,12 +53,7 @@ inline std::string wetColumnDeck(const std::string& duration, const std::string&
       Local Damping: 0.7
       Output Interval (s): 0.02
 )" + stage_extra +
-         R"(      Boundary Conditions:
-        base: {Type: solid fixity, Node Set: bottom, Direction: both}
-        left: {Type: solid fixity, Node Set: left, Direction: x}
-        right: {Type: solid fixity, Node Set: right, Direction: x}
-        rain: {Type: infiltration, Side Set: top, Flux (m/s): 1.0e-4}
-  Output:
+         wetColumnExplicitConditions() + R"(  Output:
     Name: column
 )" + output_extra;
 }
