@@ -44,8 +44,15 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
         all_nodal_ && (mode == IncrementAveraging::None ||
                        (mode == IncrementAveraging::Nodal && carriesLiquid(material.phase)));
   }
-  if (all_nodal_)
+  if (all_nodal_) {
     nodal_sums_ = Kokkos::View<Real * [kChannels + 1], MemSpace>("averaging_nodal_sums", nodes);
+    // per material: 1 where its points average (nodal, liquid-carrying), 0 where none
+    nodal_m_ = Kokkos::View<int*, MemSpace>("averaging_nodal_m", table.count());
+    auto host = Kokkos::create_mirror_view(nodal_m_);
+    for (int m = 0; m < table.count(); ++m)
+      host(m) = table.host(m).locking.volumetric_strain == IncrementAveraging::Nodal ? 1 : 0;
+    Kokkos::deep_copy(nodal_m_, host);
+  }
   if (strain_) increments_.allocateSums(kChannels, strain, elements, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, elements, nodes);
 }
@@ -56,7 +63,7 @@ void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
                                                   const ActiveNodes& active, PointRates& rates) {
   if (!strain_) return;
   if (all_nodal_ && !increments_.compensated())
-    return averageNodalChannelsTogether(table, points, shapes, active, rates);
+    return averageNodalChannelsTogether(points, shapes, active, rates);
   const int count = points.count;
   increments_.fitPoints(count);
   const auto materials_m = table.materials();
@@ -189,19 +196,10 @@ void gatherNodalChannels(const MaterialPoints& points, const PointShapes& shapes
 
 }  // namespace
 
-void VolumetricAveraging::averageNodalChannelsTogether(const MaterialTable& table,
-                                                       const MaterialPoints& points,
+void VolumetricAveraging::averageNodalChannelsTogether(const MaterialPoints& points,
                                                        const PointShapes& shapes,
                                                        const ActiveNodes& active,
                                                        PointRates& rates) {
-  // per material: 1 where its points average (nodal, liquid-carrying), 0 where none
-  if (static_cast<int>(nodal_m_.extent(0)) != table.count()) {
-    nodal_m_ = Kokkos::View<int*, MemSpace>("averaging_nodal_m", table.count());
-    auto host = Kokkos::create_mirror_view(nodal_m_);
-    for (int m = 0; m < table.count(); ++m)
-      host(m) = table.host(m).locking.volumetric_strain == IncrementAveraging::Nodal ? 1 : 0;
-    Kokkos::deep_copy(nodal_m_, host);
-  }
   const auto nodes = active.nodes();
   const auto sums = nodal_sums_;
   Kokkos::parallel_for(

@@ -1,7 +1,6 @@
 #include "argine/simulation/RestMonitor.hpp"
 
-#include <cmath>
-#include <limits>
+#include "argine/materials/KernelMath.hpp"
 
 namespace argine {
 
@@ -19,8 +18,8 @@ Real largestMotionSinceReference(const MaterialPoints& points) {
       KOKKOS_LAMBDA(const int p, Real& m) {
         if (element(p) < 0) return;
         const Real dx = u(p, 0) - reference(p, 0), dy = u(p, 1) - reference(p, 1);
-        Real motion = std::sqrt(dx * dx + dy * dy);
-        if (!std::isfinite(motion)) motion = std::numeric_limits<Real>::infinity();
+        Real motion = kmath::sqrt(dx * dx + dy * dy);
+        if (!kmath::isFinite(motion)) motion = kmath::infinity();
         if (motion > m) m = motion;
       },
       Kokkos::Max<Real>(largest));

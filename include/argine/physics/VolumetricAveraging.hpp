@@ -78,16 +78,15 @@ class VolumetricAveraging {
   /// by the scatter and the gather themselves (no per-point scratch): the same sums and
   /// quotients as averagePointValues, so the same bits, with two passes over the points
   /// instead of four and four node columns instead of six.
-  void averageNodalChannelsTogether(const MaterialTable& table, const MaterialPoints& points,
-                                    const PointShapes& shapes, const ActiveNodes& active,
-                                    PointRates& rates);
+  void averageNodalChannelsTogether(const MaterialPoints& points, const PointShapes& shapes,
+                                    const ActiveNodes& active, PointRates& rates);
   bool strain_ = false;
   /// Every material's volumetric strain averaging nodal on a liquid-carrying phase, or none.
   bool all_nodal_ = false;
   /// all_nodal_: (node, c) sum N V q_c for the three channels, (node, kChannels) sum N V; after
   /// the division (node, c) holds channel c's average.
   Kokkos::View<Real * [kChannels + 1], MemSpace> nodal_sums_;
-  Kokkos::View<int*, MemSpace> nodal_m_;  ///< all_nodal_: 1 for a material that averages
+  Kokkos::View<int*, MemSpace> nodal_m_;  ///< all_nodal_: per material, 1 where it averages
   bool pressure_ = false;
   NodalExchange* exchange_ = nullptr;           ///< several ranks: completes the node sums
   AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
