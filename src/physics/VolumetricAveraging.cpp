@@ -1,7 +1,10 @@
 #include "argine/physics/VolumetricAveraging.hpp"
 
 #include <Kokkos_ScatterView.hpp>
+#include <cstring>
+#include <type_traits>
 
+#include "argine/core/Lanes.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -127,6 +130,20 @@ KOKKOS_INLINE_FUNCTION void channelValues(const PointRates& rates, int p, Real q
   q[2] = strain;
 }
 
+/// On one thread (Serial) a node's row of the nodal sums (three channels and the weight,
+/// contiguous) is added and read as one Lanes value: per lane the same product and sum as
+/// the scalar form, so the same bits (core/Lanes.hpp).
+constexpr bool kRowsInRegister = std::is_same_v<ExecSpace, Kokkos::Serial>;
+static_assert(3 + 1 == kLanes, "a row of the nodal sums is one Lanes value");
+
+/// sums[0 .. kLanes) += add.
+KOKKOS_FORCEINLINE_FUNCTION void addToRow(Real* sums, Lanes add) {
+  Lanes value;
+  std::memcpy(&value, sums, sizeof value);
+  value = value + add;
+  std::memcpy(sums, &value, sizeof value);
+}
+
 /// The nodal sums of the three channels and their shared weight (zeroed at the active nodes
 /// first): per node the adds of scatterAverageSums, in point order.
 template <class Family, class Sums>
@@ -137,6 +154,8 @@ void scatterNodalChannels(const MaterialPoints& points, const PointShapes& shape
   const auto local_p = points.local;
   const auto material_p = points.material;
   const auto volume_p = points.volume;
+  static_assert(!kRowsInRegister ||
+                std::is_same_v<typename Sums::array_layout, Kokkos::LayoutRight>);
   auto scatter = Kokkos::Experimental::create_scatter_view(sums);
   Kokkos::parallel_for(
       "averaging_nodal_channels_scatter", Kokkos::RangePolicy<ExecSpace>(0, points.count),
@@ -149,6 +168,12 @@ void scatterNodalChannels(const MaterialPoints& points, const PointShapes& shape
         for (int c = 0; c < 3; ++c) wq[c] = w * q[c];
         typename Family::Record record;
         const auto& shape = Family::of(shapes, p, element_p, local_p, record);
+        if constexpr (kRowsInRegister) {  // a node's row of four sums is one register
+          const Lanes row = {wq[0], wq[1], wq[2], w};
+          for (int a = 0; a < Family::kNodes; ++a)
+            addToRow(&sums(shape.node[a], 0), splat<Lanes>(shape.value[a]) * row);
+          return;
+        }
         auto access = scatter.access();
         for (int a = 0; a < Family::kNodes; ++a) {
           const int i = shape.node[a];
@@ -170,19 +195,32 @@ void gatherNodalChannels(const MaterialPoints& points, const PointShapes& shapes
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto material_p = points.material;
+  static_assert(!kRowsInRegister ||
+                std::is_same_v<typename Averages::array_layout, Kokkos::LayoutRight>);
   Kokkos::parallel_for(
       "averaging_nodal_channels_gather", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
         if (element_p(p) < 0 || nodal_m(material_p(p)) == 0) return;
         typename Family::Record record;
         const auto& shape = Family::of(shapes, p, element_p, local_p, record);
-        Real average[3];
-        for (int c = 0; c < 3; ++c) {
-          average[c] = 0;
+        Real average[4];
+        if constexpr (kRowsInRegister) {  // the three channels (and the weight) at once
+          Lanes sum = splat<Lanes>(0);
           for (int a = 0; a < Family::kNodes; ++a) {
-            // a node of no weight may have no sums at all (a grid family's stencil corner)
-            if (shape.value[a] == 0) continue;
-            average[c] += shape.value[a] * averages(shape.node[a], c);
+            if (shape.value[a] == 0) continue;  // as below
+            Lanes row;
+            std::memcpy(&row, &averages(shape.node[a], 0), sizeof row);
+            sum = sum + splat<Lanes>(shape.value[a]) * row;
+          }
+          std::memcpy(average, &sum, sizeof average);
+        } else {
+          for (int c = 0; c < 3; ++c) {
+            average[c] = 0;
+            for (int a = 0; a < Family::kNodes; ++a) {
+              // a node of no weight may have no sums at all (a grid family's stencil corner)
+              if (shape.value[a] == 0) continue;
+              average[c] += shape.value[a] * averages(shape.node[a], c);
+            }
           }
         }
         const Real shift =

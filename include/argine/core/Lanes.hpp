@@ -16,6 +16,10 @@
 
 #include "argine/core/Types.hpp"
 
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
 namespace argine {
 
 /// Points per Lanes value: 4 doubles, one AVX register.
@@ -68,10 +72,19 @@ KOKKOS_INLINE_FUNCTION LaneMask either(LaneMask a, LaneMask b) {
 KOKKOS_INLINE_FUNCTION bool anyLane(bool condition) {
   return condition;
 }
+/// With AVX one test of the whole register (vptest): the fold below compiled to four moves
+/// out of the register and three ors, 6.5 % of the point-state pass of the levee (perf).
 KOKKOS_INLINE_FUNCTION bool anyLane(LaneMask condition) {
+#if defined(__AVX__)
+  static_assert(sizeof(LaneMask) == sizeof(__m256i));
+  __m256i bits;
+  std::memcpy(&bits, &condition, sizeof bits);
+  return !_mm256_testz_si256(bits, bits);
+#else
   LaneMask folded = condition;
   for (int l = 1; l < kLanes; ++l) folded[0] |= condition[l];
   return folded[0] != 0;
+#endif
 }
 
 /// out[l] = (in[0][l], in[1][l], in[2][l], in[3][l]): four values of kLanes points turned into
