@@ -50,6 +50,45 @@ KOKKOS_INLINE_FUNCTION void exchangeWeightAndHead(const PointMaterial& material,
   head = piezometricPressure(material, pressure, pts.position(p, 1), gravity);
 }
 
+/// Whether the kLanes points p .. p + kLanes - 1 (all below `count`) take the lanes' forms
+/// below: located points of one material that exchanges, saturated or unsaturated on the
+/// linear retention curve (the slope's lanes form, RetentionCurve.hpp).
+KOKKOS_INLINE_FUNCTION bool lanesExchangeTogether(
+    const Kokkos::View<const PointMaterial*, MemSpace>& materials_m, const MaterialPoints& pts,
+    int p, int count) {
+  if (p + kLanes > count) return false;
+  const int material = pts.material(p);
+  for (int l = 0; l < kLanes; ++l)
+    if (pts.element(p + l) < 0 || pts.material(p + l) != material) return false;
+  const PointMaterial& m = materials_m(material);
+  return carriesLiquid(m.phase) && m.locking.intra_element_seepage &&
+         (m.phase == PhaseModel::Saturated || m.retention.model == RetentionModel::Linear);
+}
+
+/// exchangeWeightAndHead of kLanes such points at once: the same formulas lane by lane (the
+/// storage of pointLiquidStorage with the linear curve's slope), so the same bits.
+KOKKOS_INLINE_FUNCTION void exchangeWeightAndHeadLanes(const PointMaterial& material,
+                                                       const MaterialPoints& pts, int p, Real dt,
+                                                       Real gravity, Lanes& weight, Lanes& head) {
+  const Lanes pressure = load<Lanes>(pts.pressure_liquid, p);
+  Lanes ds_ds = splat<Lanes>(0);
+  if (material.phase == PhaseModel::Unsaturated) {
+    Lanes unused;
+    linearSaturationAndSlopeAtPressure(material.retention, pressure, unused, ds_ds);
+  }
+  const Lanes storage =
+      load<Lanes>(pts.porosity, p) * load<Lanes>(pts.volume, p) *
+      liquidContentSlope(load<Lanes>(pts.density_liquid, p), load<Lanes>(pts.saturation, p), ds_ds,
+                         material.liquid.bulk_modulus);
+  const Lanes conductance = pointDarcyConductance(load<Lanes>(pts.conductivity, p));
+  const Lanes w = starExchangeWeight(conductance, storage, dt);
+  const LaneMask exchanges = w > 0;
+  weight = select(exchanges, w, splat<Lanes>(0));
+  head = select(exchanges,
+                piezometricPressure(material, pressure, load<Lanes>(pts.position, p, 1), gravity),
+                splat<Lanes>(0));
+}
+
 }  // namespace
 
 void IntraElementSeepage::applyOverElements(const MaterialTable& table,
@@ -63,31 +102,71 @@ void IntraElementSeepage::applyOverElements(const MaterialTable& table,
   auto sums = heads_.element_sums;  // (element, 0): sum w phi, (element, 1): sum w
   Kokkos::deep_copy(sums, 0.0);
   auto scatter = Kokkos::Experimental::create_scatter_view(sums);
+  // By chunks of kLanes points: where they exchange together (lanesExchangeTogether), their
+  // weights, heads and exchanges at once; the element sums are added point by point in
+  // point order either way, so the bits are those of the one-point forms.
+  const int chunks = (count + kLanes - 1) / kLanes;
   Kokkos::parallel_for(
-      "intra_element_seepage_sums", Kokkos::RangePolicy<ExecSpace>(0, count),
-      KOKKOS_LAMBDA(const int p) {
-        Real weight, head;
-        exchangeWeightAndHead(materials_m(pts.material(p)), pts, p, dt, gravity, weight, head);
-        weight_p(p) = weight;
-        if (!(weight > 0)) return;
-        const int e = pts.element(p);
+      "intra_element_seepage_sums", Kokkos::RangePolicy<ExecSpace>(0, chunks),
+      KOKKOS_LAMBDA(const int chunk) {
+        const int first = chunk * kLanes, end = first + kLanes < count ? first + kLanes : count;
         auto access = scatter.access();
-        access(e, 0) += weight * head;
-        access(e, 1) += weight;
+        const auto add = [&](int p, Real weight, Real head) {
+          if (!(weight > 0)) return;
+          const int e = pts.element(p);
+          access(e, 0) += weight * head;
+          access(e, 1) += weight;
+        };
+        if (lanesExchangeTogether(materials_m, pts, first, count)) {
+          Lanes weight, head;
+          exchangeWeightAndHeadLanes(materials_m(pts.material(first)), pts, first, dt, gravity,
+                                     weight, head);
+          store(weight_p, first, weight);
+          for (int l = 0; l < kLanes; ++l) add(first + l, weight[l], head[l]);
+          return;
+        }
+        for (int p = first; p < end; ++p) {
+          Real weight, head;
+          exchangeWeightAndHead(materials_m(pts.material(p)), pts, p, dt, gravity, weight, head);
+          weight_p(p) = weight;
+          add(p, weight, head);
+        }
       });
   Kokkos::Experimental::contribute(sums, scatter);
   const PointRates rts = rates;
   Kokkos::parallel_for(
-      "intra_element_seepage_exchange", Kokkos::RangePolicy<ExecSpace>(0, count),
-      KOKKOS_LAMBDA(const int p) {
-        const Real weight = weight_p(p);
-        if (!(weight > 0)) return;
-        const PointMaterial& material = materials_m(pts.material(p));
-        const int e = pts.element(p);
-        const Real centre = sums(e, 0) / sums(e, 1);
-        const Real own =
-            piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
-        addPointLiquidMassChange(material, pts, rts, p, weight * (centre - own));
+      "intra_element_seepage_exchange", Kokkos::RangePolicy<ExecSpace>(0, chunks),
+      KOKKOS_LAMBDA(const int chunk) {
+        const int first = chunk * kLanes, end = first + kLanes < count ? first + kLanes : count;
+        // together: one material, every lane exchanging (so located)
+        bool together = end - first == kLanes;
+        for (int l = 0; l < kLanes && together; ++l)
+          together = weight_p(first + l) > 0 && pts.material(first + l) == pts.material(first);
+        if (together) {
+          const PointMaterial& material = materials_m(pts.material(first));
+          Lanes weighted_heads, weights;
+          for (int l = 0; l < kLanes; ++l) {
+            const int e = pts.element(first + l);
+            weighted_heads[l] = sums(e, 0);
+            weights[l] = sums(e, 1);
+          }
+          const Lanes centre = weighted_heads / weights;
+          const Lanes own = piezometricPressure(material, load<Lanes>(pts.pressure_liquid, first),
+                                                load<Lanes>(pts.position, first, 1), gravity);
+          addPointLiquidMassChange(material, pts, rts, first,
+                                   load<Lanes>(weight_p, first) * (centre - own));
+          return;
+        }
+        for (int p = first; p < end; ++p) {
+          const Real weight = weight_p(p);
+          if (!(weight > 0)) continue;
+          const PointMaterial& material = materials_m(pts.material(p));
+          const int e = pts.element(p);
+          const Real centre = sums(e, 0) / sums(e, 1);
+          const Real own =
+              piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
+          addPointLiquidMassChange(material, pts, rts, p, weight * (centre - own));
+        }
       });
 }
 

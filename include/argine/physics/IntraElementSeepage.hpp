@@ -53,6 +53,7 @@
 /// The exchange enters the point mass balance as an extra flux divergence (PointRates), so the
 /// outflow limit and the pressure update see it like any other flux.
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
 
@@ -67,10 +68,12 @@ struct PointShapes;
 
 /// w_p = dt g C / (C + dt g) (kg/Pa): the weight of a point of conductance g (kg/(Pa s)) and
 /// storage C (kg/Pa) in the implicit star exchange over dt (file comment). C -> 0: C (the
-/// point takes the centre's phi); g -> 0: dt g (the explicit Darcy exchange).
-KOKKOS_INLINE_FUNCTION Real starExchangeWeight(Real conductance, Real storage, Real dt) {
-  const Real flow = dt * conductance;
-  return flow + storage > 0 ? flow * storage / (flow + storage) : Real(0);
+/// point takes the centre's phi); g -> 0: dt g (the explicit Darcy exchange). T = Real, or
+/// Lanes for kLanes points.
+template <class T>
+KOKKOS_INLINE_FUNCTION T starExchangeWeight(T conductance, T storage, Real dt) {
+  const T flow = dt * conductance;
+  return select(flow + storage > 0, flow * storage / (flow + storage), splat<T>(0));
 }
 
 class IntraElementSeepage {

@@ -4,6 +4,7 @@
 /// IntraElementSeepage): the piezometric pressure that drives them, a point's liquid storage
 /// and Darcy conductance, and how an exchanged mass enters the point's mass balance.
 
+#include "argine/core/Lanes.hpp"
 #include "argine/core/Types.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -13,9 +14,10 @@
 namespace argine {
 
 /// phi = p_L + rho_L0 g y (Pa), gravity g acting in -y: the total head times rho_L0 g
-/// (thesis Eq. 4.50); uniform in a hydrostatic state.
-KOKKOS_INLINE_FUNCTION Real piezometricPressure(const PointMaterial& material, Real pressure,
-                                                Real y, Real gravity) {
+/// (thesis Eq. 4.50); uniform in a hydrostatic state. T = Real, or Lanes for kLanes points.
+template <class T>
+KOKKOS_INLINE_FUNCTION T piezometricPressure(const PointMaterial& material, T pressure, T y,
+                                             Real gravity) {
   return pressure + material.liquid.density * gravity * y;
 }
 
@@ -33,23 +35,29 @@ KOKKOS_INLINE_FUNCTION Real pointLiquidStorage(const PointMaterial& material,
 
 /// The Darcy conductance k / g0 of a point's own cell (kg/(Pa s) per metre of thickness): a
 /// square of side a passes (k/g0)(a/a) dphi; g0 = kStandardGravity, the gravity with which a
-/// conductivity in m/s is defined (k / (rho_L g0) = kappa / mu_L).
-KOKKOS_INLINE_FUNCTION Real pointDarcyConductance(Real conductivity) {
+/// conductivity in m/s is defined (k / (rho_L g0) = kappa / mu_L). T = Real, or Lanes.
+template <class T>
+KOKKOS_INLINE_FUNCTION T pointDarcyConductance(T conductivity) {
   return conductivity / kStandardGravity;
 }
 
 /// Adds `mass_change` (kg, into point p, over the step) to the step's flux divergence of the
 /// point's mass balance, before the point update: complete form, M_L^{k+1} = M_L^k - V^k dt
 /// div(c w) with V^k = points.volume(p) now (updatePointStates moves V to V^{k+1} only
-/// afterwards); simplified, M_L^{k+1} = M_L^k (1 - dt div w).
+/// afterwards); simplified, M_L^{k+1} = M_L^k (1 - dt div w). T = Real: point p; Lanes: the
+/// points p .. p + kLanes - 1 (of `material`), mass_change of each.
+template <class T>
 KOKKOS_INLINE_FUNCTION void addPointLiquidMassChange(const PointMaterial& material,
                                                      const MaterialPoints& points,
                                                      const PointRates& rates, int p,
-                                                     Real mass_change) {
-  if (material.mass_balance == MassBalanceForm::Complete)
-    rates.content_flux_divergence_increment_p(p) -= mass_change / points.volume(p);
-  else
-    rates.liquid_divergence_increment_p(p) -= mass_change / points.mass_liquid(p);
+                                                     T mass_change) {
+  if (material.mass_balance == MassBalanceForm::Complete) {
+    const auto flux = rates.content_flux_divergence_increment_p;
+    store(flux, p, load<T>(flux, p) - mass_change / load<T>(points.volume, p));
+  } else {
+    const auto divergence = rates.liquid_divergence_increment_p;
+    store(divergence, p, load<T>(divergence, p) - mass_change / load<T>(points.mass_liquid, p));
+  }
 }
 
 }  // namespace argine
