@@ -76,10 +76,7 @@ KOKKOS_INLINE_FUNCTION void exchangeWeightAndHeadLanes(const PointMaterial& mate
     Lanes unused;
     linearSaturationAndSlopeAtPressure(material.retention, pressure, unused, ds_ds);
   }
-  const Lanes storage =
-      load<Lanes>(pts.porosity, p) * load<Lanes>(pts.volume, p) *
-      liquidContentSlope(load<Lanes>(pts.density_liquid, p), load<Lanes>(pts.saturation, p), ds_ds,
-                         material.liquid.bulk_modulus);
+  const Lanes storage = pointLiquidStorage(material, pts, p, ds_ds);
   const Lanes conductance = pointDarcyConductance(load<Lanes>(pts.conductivity, p));
   const Lanes w = starExchangeWeight(conductance, storage, dt);
   const LaneMask exchanges = w > 0;
@@ -150,22 +147,16 @@ void IntraElementSeepage::applyOverElements(const MaterialTable& table,
             weighted_heads[l] = sums(e, 0);
             weights[l] = sums(e, 1);
           }
-          const Lanes centre = weighted_heads / weights;
-          const Lanes own = piezometricPressure(material, load<Lanes>(pts.pressure_liquid, first),
-                                                load<Lanes>(pts.position, first, 1), gravity);
-          addPointLiquidMassChange(material, pts, rts, first,
-                                   load<Lanes>(weight_p, first) * (centre - own));
+          exchangeTowards(material, pts, rts, first, load<Lanes>(weight_p, first),
+                          weighted_heads / weights, gravity);
           return;
         }
         for (int p = first; p < end; ++p) {
           const Real weight = weight_p(p);
           if (!(weight > 0)) continue;
-          const PointMaterial& material = materials_m(pts.material(p));
           const int e = pts.element(p);
-          const Real centre = sums(e, 0) / sums(e, 1);
-          const Real own =
-              piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
-          addPointLiquidMassChange(material, pts, rts, p, weight * (centre - own));
+          exchangeTowards(materials_m(pts.material(p)), pts, rts, p, weight,
+                          sums(e, 0) / sums(e, 1), gravity);
         }
       });
 }
@@ -199,12 +190,9 @@ void IntraElementSeepage::apply(const MaterialTable& table, const MaterialPoints
       "intra_element_seepage_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
         if (mode_p(p) == kAverageNone) return;
-        const PointMaterial& material = materials_m(pts.material(p));
         // The point's own phi (its p_L and position are unchanged since the first kernel)
-        // against the element's centre value phi_c now in head_p.
-        const Real own =
-            piezometricPressure(material, pts.pressure_liquid(p), pts.position(p, 1), gravity);
-        addPointLiquidMassChange(material, pts, rts, p, weight_p(p) * (head_p(p) - own));
+        // against the patch's centre value phi_c now in head_p.
+        exchangeTowards(materials_m(pts.material(p)), pts, rts, p, weight_p(p), head_p(p), gravity);
       });
 }
 

@@ -21,17 +21,32 @@ KOKKOS_INLINE_FUNCTION T piezometricPressure(const PointMaterial& material, T pr
   return pressure + material.liquid.density * gravity * y;
 }
 
-/// dM_L/dp_L = n V rho_L (S_L/K_L - dS_L/ds) of point p (kg/Pa), 4.12 with 4.13.
+/// dM_L/dp_L = n V rho_L (S_L/K_L - dS_L/ds) (kg/Pa), 4.12 with 4.13, of point p (T = Real)
+/// or of points p .. p + kLanes - 1 (Lanes), given dS_L/ds at their p_L.
+template <class T>
+KOKKOS_INLINE_FUNCTION T pointLiquidStorage(const PointMaterial& material,
+                                            const MaterialPoints& points, int p, T ds_ds) {
+  return load<T>(points.porosity, p) * load<T>(points.volume, p) *
+         liquidContentSlope(load<T>(points.density_liquid, p), load<T>(points.saturation, p), ds_ds,
+                            material.liquid.bulk_modulus);
+}
+
+/// The same of point p, dS_L/ds from the material's retention curve (0 when saturated).
 KOKKOS_INLINE_FUNCTION Real pointLiquidStorage(const PointMaterial& material,
                                                const MaterialPoints& points, int p) {
   const Real pressure = points.pressure_liquid(p);
   const Real ds_ds = material.phase == PhaseModel::Unsaturated
                          ? saturationSuctionDerivativeAtPressure(material.retention, pressure)
                          : 0;
-  return points.porosity(p) * points.volume(p) *
-         liquidContentSlope(points.density_liquid(p), points.saturation(p), ds_ds,
-                            material.liquid.bulk_modulus);
+  return pointLiquidStorage(material, points, p, ds_ds);
 }
+
+/// Point p's (Real) or points p .. p + kLanes - 1's (Lanes) exchange of `weight` (kg/Pa) towards
+/// the piezometric pressure `target` (Pa): weight (target - phi_p) into the mass balance.
+template <class T>
+KOKKOS_INLINE_FUNCTION void exchangeTowards(const PointMaterial& material,
+                                            const MaterialPoints& points, const PointRates& rates,
+                                            int p, T weight, T target, Real gravity);
 
 /// The Darcy conductance k / g0 of a point's own cell (kg/(Pa s) per metre of thickness): a
 /// square of side a passes (k/g0)(a/a) dphi; g0 = kStandardGravity, the gravity with which a
@@ -58,6 +73,15 @@ KOKKOS_INLINE_FUNCTION void addPointLiquidMassChange(const PointMaterial& materi
     const auto divergence = rates.liquid_divergence_increment_p;
     store(divergence, p, load<T>(divergence, p) - mass_change / load<T>(points.mass_liquid, p));
   }
+}
+
+template <class T>
+KOKKOS_INLINE_FUNCTION void exchangeTowards(const PointMaterial& material,
+                                            const MaterialPoints& points, const PointRates& rates,
+                                            int p, T weight, T target, Real gravity) {
+  const T own = piezometricPressure(material, load<T>(points.pressure_liquid, p),
+                                    load<T>(points.position, p, 1), gravity);
+  addPointLiquidMassChange(material, points, rates, p, weight * (target - own));
 }
 
 }  // namespace argine
