@@ -105,6 +105,42 @@ TEST(LiquidState, LanesOfALinearCurveGetTheOnePointRootOrDeclineTheKink) {
   }
 }
 
+TEST(LiquidState, TwoGroupsOfLanesIterateSideBySideWithEachLanesOwnRoot) {
+  // pressureOfLiquidContentLanes<2>: eight points, the second group needing more iterations
+  // than the first (guesses further off), get pressureOfLiquidContent's bits in every lane; a
+  // flat-curve guess in either group makes the pair decline and leave both groups alone.
+  PointMaterial m = material(PhaseModel::Unsaturated);
+  m.retention.model = RetentionModel::Linear;
+  m.retention.linear_slope = 4e-7;
+  m.retention.saturation_min = 0;
+  m.retention.saturation_max = 1;
+  auto content = [&](Real p) {
+    return saturationAtPressure(m.retention, p) * liquidDensity(m.liquid, p);
+  };
+  const Lanes roots[2] = {{-5e3, -31e3, -700.0, -2e5}, {-12e3, -90e3, -1.5e3, -4e5}};
+  const Lanes guesses[2] = {roots[0] + Lanes{40.0, -250.0, 3.0, -1e3},
+                            roots[1] + Lanes{9e3, -4e4, 1e3, 2e5}};
+  Lanes contents[2];
+  for (int g = 0; g < 2; ++g)
+    for (int l = 0; l < kLanes; ++l) contents[g][l] = content(roots[g][l]);
+  Lanes found[2] = {{7, 7, 7, 7}, {7, 7, 7, 7}};
+  ASSERT_TRUE(pressureOfLiquidContentLanes<2>(m, contents, guesses, found));
+  for (int g = 0; g < 2; ++g)
+    for (int l = 0; l < kLanes; ++l) {
+      const Real one = pressureOfLiquidContent(m, contents[g][l], guesses[g][l]);
+      EXPECT_EQ(std::memcmp(&one, &found[g][l], sizeof one), 0) << g << " " << l;
+      EXPECT_NEAR(found[g][l], roots[g][l], 1e-13 * kBulk);
+    }
+  for (int flat = 0; flat < 2; ++flat) {
+    Lanes across[2] = {guesses[0], guesses[1]};
+    across[flat][2] = -3e6;  // S_L = S_min there: a flat curve, a step to infinity
+    Lanes untouched[2] = {{7, 7, 7, 7}, {7, 7, 7, 7}};
+    EXPECT_FALSE(pressureOfLiquidContentLanes<2>(m, contents, across, untouched)) << flat;
+    for (int g = 0; g < 2; ++g)
+      for (int l = 0; l < kLanes; ++l) EXPECT_EQ(untouched[g][l], 7);
+  }
+}
+
 TEST(LiquidState, OccludedAirMakesThePositivePressureSoftAndIsInvertedExactly) {
   // S_max = 0.95 with its 5 % of air occluded at p_a = 101.325 kPa: the content S_L rho_L at
   // p_L > 0 is inverted to the root, and one more kilogram per cubic metre of pore space

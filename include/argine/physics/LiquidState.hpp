@@ -194,35 +194,60 @@ KOKKOS_INLINE_FUNCTION Real pressureOfLiquidContent(const PointMaterial& materia
 /// `pressure` untouched, where some lane needs more (a content that is not positive, a
 /// step out of the bracket at the kink s = 0 or on the flat S_L = S_min, more than
 /// kLaneIterations iterations): the caller then takes the one-point function lane by lane.
+/// kGroups Lanes values of the same material side by side: each iteration is one chain of
+/// dependent operations (the polynomial exp, then a division), so two groups iterated
+/// together fill the pipeline that one leaves idle; every lane's iterates are still its own.
+template <int kGroups>
 KOKKOS_INLINE_FUNCTION bool pressureOfLiquidContentLanes(const PointMaterial& material,
-                                                         Lanes content, Lanes guess,
-                                                         Lanes& pressure) {
+                                                         const Lanes (&content)[kGroups],
+                                                         const Lanes (&guess)[kGroups],
+                                                         Lanes (&pressure)[kGroups]) {
   constexpr int kLaneIterations = 8;
-  if (anyLane(~(content > 0))) return false;
+  for (int g = 0; g < kGroups; ++g)
+    if (anyLane(~(content[g] > 0))) return false;
   const Real bulk = material.liquid.bulk_modulus;
-  Lanes current = guess;
-  Lanes low = splat<Lanes>(-kmath::infinity()), high = splat<Lanes>(kmath::infinity());
-  LaneMask done{};  // all lanes still iterating
+  Lanes current[kGroups], low[kGroups], high[kGroups];
+  LaneMask done[kGroups];
+  for (int g = 0; g < kGroups; ++g) {
+    current[g] = guess[g];
+    low[g] = splat<Lanes>(-kmath::infinity());
+    high[g] = splat<Lanes>(kmath::infinity());
+    done[g] = LaneMask{};  // all lanes still iterating
+  }
   for (int iteration = 0; iteration < kLaneIterations; ++iteration) {
-    Lanes s, swrc_slope;
-    linearSaturationAndSlopeAtPressure(material.retention, current, s, swrc_slope);
-    const Lanes rho = liquidDensity(material.liquid, current);
-    const Lanes residual = s * rho - content;
-    done = either(done, residual == 0);  // at the root: kept, as the one-point loop stops there
-    const LaneMask above = residual > 0;
-    high = select(above, current, high);
-    low = select(above, low, current);
-    const Lanes next = current - residual / liquidContentSlope(rho, s, swrc_slope, bulk);
-    if (anyLane(~done & ~both(next > low, next < high))) return false;
-    const LaneMask converged = kmath::fabs(next - current) <= 1e-14 * bulk;
-    current = select(done, current, next);
-    done = either(done, converged);
-    if (!anyLane(~done)) {
-      pressure = current;
+    bool all_done = true;
+    for (int g = 0; g < kGroups; ++g) {
+      Lanes s, swrc_slope;
+      linearSaturationAndSlopeAtPressure(material.retention, current[g], s, swrc_slope);
+      const Lanes rho = liquidDensity(material.liquid, current[g]);
+      const Lanes residual = s * rho - content[g];
+      // at the root: kept, as the one-point loop stops there
+      done[g] = either(done[g], residual == 0);
+      const LaneMask above = residual > 0;
+      high[g] = select(above, current[g], high[g]);
+      low[g] = select(above, low[g], current[g]);
+      const Lanes next = current[g] - residual / liquidContentSlope(rho, s, swrc_slope, bulk);
+      if (anyLane(~done[g] & ~both(next > low[g], next < high[g]))) return false;
+      const LaneMask converged = kmath::fabs(next - current[g]) <= 1e-14 * bulk;
+      current[g] = select(done[g], current[g], next);
+      done[g] = either(done[g], converged);
+      all_done = all_done && !anyLane(~done[g]);
+    }
+    if (all_done) {
+      for (int g = 0; g < kGroups; ++g) pressure[g] = current[g];
       return true;
     }
   }
   return false;
+}
+KOKKOS_INLINE_FUNCTION bool pressureOfLiquidContentLanes(const PointMaterial& material,
+                                                         Lanes content, Lanes guess,
+                                                         Lanes& pressure) {
+  const Lanes contents[1] = {content}, guesses[1] = {guess};
+  Lanes pressures[1];
+  if (!pressureOfLiquidContentLanes<1>(material, contents, guesses, pressures)) return false;
+  pressure = pressures[0];
+  return true;
 }
 
 }  // namespace argine
