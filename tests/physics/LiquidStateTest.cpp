@@ -27,6 +27,17 @@ PointMaterial material(PhaseModel phase) {
   return m;
 }
 
+/// An unsaturated material on the linear retention curve of the default scene's soil
+/// (a_v = 4e-4 1/kPa, S_L from 1 down to 0 at 2.5 MPa of suction).
+PointMaterial linearRetentionMaterial() {
+  PointMaterial m = material(PhaseModel::Unsaturated);
+  m.retention.model = RetentionModel::Linear;
+  m.retention.linear_slope = 4e-7;
+  m.retention.saturation_min = 0;
+  m.retention.saturation_max = 1;
+  return m;
+}
+
 /// S_L rho_L at p_L: the content a pressure stores (4.13 and the SWRC).
 Real contentAt(const PointMaterial& m, Real pressure) {
   return saturation(m.retention, suctionOfPressure(pressure)) * liquidDensity(m.liquid, pressure);
@@ -58,11 +69,7 @@ TEST(LiquidState, UnsaturatedPressureIsFoundFromAGuessWhereTheSaturationIsZero) 
   // scene's soil): a guess there sees a flat S_L rho_L (no slope, an infinite Newton step).
   // Found by the lanes test: a point whose content fell just below rho_L0 got the explicit
   // predictor's guess of ~-4 MPa and a NaN pressure. The root: S_L = 0.998 at ~5 kPa.
-  PointMaterial m = material(PhaseModel::Unsaturated);
-  m.retention.model = RetentionModel::Linear;
-  m.retention.linear_slope = 4e-7;
-  m.retention.saturation_min = 0;
-  m.retention.saturation_max = 1;
+  const PointMaterial m = linearRetentionMaterial();
   const Real p = -5e3, content = contentAt(m, p);
   for (const Real guess : {-4.2e6, -1e9, 7e3})
     EXPECT_NEAR(pressureOfLiquidContent(m, content, guess), p, 1e-13 * kBulk) << guess;
@@ -74,10 +81,7 @@ TEST(LiquidState, LanesOfALinearCurveGetTheOnePointRootOrDeclineTheKink) {
   // lies where S_L = S_min (a flat curve: a step out of any bracket), or with no content,
   // makes it decline and leave the pressures alone.
   for (const Real air : {0.0, 101325.0}) {
-    PointMaterial m = material(PhaseModel::Unsaturated);
-    m.retention.model = RetentionModel::Linear;
-    m.retention.linear_slope = 4e-7;
-    m.retention.saturation_min = 0;
+    PointMaterial m = linearRetentionMaterial();
     m.retention.saturation_max = air > 0 ? 0.95 : 1;
     m.retention.occluded_air_pressure = air;
     auto content = [&](Real p) {
@@ -109,11 +113,7 @@ TEST(LiquidState, TwoGroupsOfLanesIterateSideBySideWithEachLanesOwnRoot) {
   // pressureOfLiquidContentLanes<2>: eight points, the second group needing more iterations
   // than the first (guesses further off), get pressureOfLiquidContent's bits in every lane; a
   // flat-curve guess in either group makes the pair decline and leave both groups alone.
-  PointMaterial m = material(PhaseModel::Unsaturated);
-  m.retention.model = RetentionModel::Linear;
-  m.retention.linear_slope = 4e-7;
-  m.retention.saturation_min = 0;
-  m.retention.saturation_max = 1;
+  const PointMaterial m = linearRetentionMaterial();
   auto content = [&](Real p) {
     return saturationAtPressure(m.retention, p) * liquidDensity(m.liquid, p);
   };
