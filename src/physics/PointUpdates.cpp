@@ -18,6 +18,8 @@ struct PointStateUpdate {
   size_type value_count = 2;
   PointUpdateViews v;
   int count = 0;
+  /// Chunks of kLanes points a call takes: the pair of operator() (a constant of that code,
+  /// not a setting; updatePointStates sizes its range by it).
   static constexpr int kChunksPerCall = 2;
 
   KOKKOS_INLINE_FUNCTION bool lanesShareAMaterial(int p) const {
