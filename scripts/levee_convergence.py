@@ -38,9 +38,10 @@ and, as diagnostics of the moving mass's water (one table per time, not charted)
   mass p_L           the volume-weighted mean liquid pressure of those points (kPa)
 
 and prints them with the change against the next finer resolution and, with three, the observed
-order p = log(|q_h - q_h/r| / |q_h/r - q_h/r^2|) / log r, the Richardson limit and the finest
-value's error bar (error_bar: Roache's grid convergence index where the changes keep their sign,
-with the order capped at the method's first order). With --figure it charts each
+order p (observed_order: log(|q_3 - q_2| / |q_2 - q_1|) / log r for one refinement ratio r,
+Celik et al.'s equation for two, e.g. 0.1, 0.05 and 1/28 m), the Richardson limit and the
+finest value's error bar (error_bar: Roache's grid convergence index where the changes keep
+their sign, with the order capped at the method's first order). With --figure it charts each
 quantity at the last time against the wall time of its run, one line per series: the
 coarsest model that is still right is the leftmost point near where the lines end.
 """
@@ -244,15 +245,50 @@ def main():
         print(f"\nwrote {args.figure}")
 
 
-def error_bar(values, ratio, formal_order=1.0):
+def observed_order(sizes, values):
+    """Observed order p of the last three values (coarse to fine) on the last three element
+    sizes, for q(h) = q0 + C h^p: with e32 = q2 - q3 and e21 = q1 - q2 (q1 the finest, both of
+    one sign), e32 / e21 = (h3^p - h2^p) / (h2^p - h1^p). One refinement ratio r: p =
+    log(e32 / e21) / log r. Two ratios (e.g. 0.1, 0.05 and 1/28 m; the equation of Celik et
+    al. 2008, J. Fluids Eng. 130, 078001, Eqs. 3-5): the right-hand side grows with p from
+    log(h3 / h2) / log(h2 / h1) at p -> 0, so p is found by bisection; nan where e32 / e21 is
+    below that (no positive order), inf where it lies above its value at p = 50."""
+    h3, h2, h1 = sizes[-3:]
+    q3, q2, q1 = values[-3:]
+    e32, e21 = q2 - q3, q1 - q2
+    if e32 == 0 or e21 == 0 or e32 * e21 < 0:
+        return math.nan
+    target = math.log(e32 / e21)
+    if math.isclose(h3 / h2, h2 / h1, rel_tol=1e-9):
+        return target / math.log(h2 / h1)
+
+    def of(p):  # log of the ratio of the changes at order p
+        return math.log((h3**p - h2**p) / (h2**p - h1**p))
+
+    low, high = 0.0, 50.0
+    if target <= math.log(math.log(h3 / h2) / math.log(h2 / h1)):
+        return math.nan
+    if target >= of(high):
+        return math.inf
+    for _ in range(200):
+        middle = 0.5 * (low + high)
+        if of(middle) < target:
+            low = middle
+        else:
+            high = middle
+    return 0.5 * (low + high)
+
+
+def error_bar(values, sizes, formal_order=1.0):
     """Observed order, Richardson limit and error bar of the finest of the last three values
-    (coarse to fine, refinement ratio `ratio`). Where the changes keep their sign and the
-    observed order p is at least 0.5: Roache's grid convergence index with safety factor
-    1.25, GCI = 1.25 |q_1 - q_2| / (r^p' - 1), and the limit q_1 + (q_1 - q_2) / (r^p' - 1),
-    with p' = min(p, formal_order): an order above the method's is taken for a coarse mesh
-    outside the asymptotic range, not for a faster convergence (linear-shape MPM with FLIP
-    is at best first order in the displacements). Otherwise (the changes oscillate, or p <
-    0.5) no limit and, as the error bar, 1.25 x the larger of the last two changes."""
+    (coarse to fine, on element sizes `sizes`; observed_order). Where the changes keep their
+    sign and the observed order p is at least 0.5: Roache's grid convergence index with
+    safety factor 1.25, GCI = 1.25 |q_1 - q_2| / (r21^p' - 1), and the limit q_1 + (q_1 - q_2)
+    / (r21^p' - 1), with r21 the last refinement ratio and p' = min(p, formal_order): an order
+    above the method's is taken for a coarse mesh outside the asymptotic range, not for a
+    faster convergence (linear-shape MPM with FLIP is at best first order in the
+    displacements). Otherwise (the changes oscillate, or p < 0.5) no limit and, as the error
+    bar, 1.25 x the larger of the last two changes."""
     if len(values) < 3 or any(math.isnan(v) for v in values[-3:]):
         return math.nan, math.nan, math.nan
     q3, q2, q1 = values[-3:]
@@ -261,18 +297,19 @@ def error_bar(values, ratio, formal_order=1.0):
         return math.inf, q1, 0.0
     if e32 == 0 or e32 * e21 < 0:
         return math.nan, math.nan, 1.25 * max(abs(e32), abs(e21))
-    order = math.log(abs(e32) / abs(e21)) / math.log(ratio)
-    if order < 0.5:
+    order = observed_order(sizes, values)
+    if not order >= 0.5:
         return order, math.nan, 1.25 * max(abs(e32), abs(e21))
     used = min(order, formal_order)
-    return order, q1 + e21 / (ratio**used - 1), 1.25 * abs(e21) / (ratio**used - 1)
+    r21 = sizes[-2] / sizes[-1]
+    return order, q1 + e21 / (r21**used - 1), 1.25 * abs(e21) / (r21**used - 1)
 
 
 def table(label, runs, times):
     print(f"\n{label or 'runs'}: element size (m), points, wall time (s)")
     for r in runs:
         print(f"  {r['h']:.3g} m  {r['points']:6d} points  {r['wall']:.0f} s")
-    ratio = runs[-2]["h"] / runs[-1]["h"] if len(runs) >= 2 else 2.0
+    sizes = [r["h"] for r in runs]
     for t in times:
         print(f"\n{label} t = {t:g} s after the event started")
         print("| quantity | " + " | ".join(f"h = {r['h']:.3g} m" for r in runs)
@@ -285,7 +322,7 @@ def table(label, runs, times):
             values = [r["rows"][t].get(q, math.nan) if t in r["rows"] else math.nan
                       for r in runs]
             changes = [b - a for a, b in zip(values, values[1:])]
-            order, limit, bar = error_bar(values, ratio)
+            order, limit, bar = error_bar(values, sizes)
             unit = "m3/m" if q == "mobilised volume" else "m"
             print(f"| {q} ({unit}) | " + " | ".join(f"{v:.3f}" for v in values) + " | "
                   + ", ".join(f"{c:+.3f}" for c in changes) + f" | {order:.2f} | {limit:.3f} | "

@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""Self-check of levee_convergence.py's observed order and error bar (CTest
+scripts.levee_convergence_selfcheck, < 1 s) on sequences whose order and limit are known by
+hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m)."""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import levee_convergence as lc  # noqa: E402
+
+failures = []
+
+
+def check(name, got, expected, tolerance):
+    ok = abs(got - expected) <= tolerance
+    print(f"{'ok  ' if ok else 'FAIL'} {name}: {got:.12g} (expected {expected:.12g})")
+    if not ok:
+        failures.append(name)
+
+
+# One ratio, r = 2: 1.0, 1.5, 1.75 on 0.4, 0.2, 0.1 m. e32 = 0.5, e21 = 0.25: p = log 2 / log 2
+# = 1; limit 1.75 + 0.25 / (2 - 1) = 2.0; GCI 1.25 * 0.25 / (2 - 1) = 0.3125.
+order, limit, bar = lc.error_bar([1.0, 1.5, 1.75], [0.4, 0.2, 0.1])
+check("one ratio: order", order, 1.0, 1e-12)
+check("one ratio: limit", limit, 2.0, 1e-12)
+check("one ratio: error bar", bar, 0.3125, 1e-12)
+
+# Two ratios, q = 2 - h on 0.1, 0.05, 1/28 m: 1.9, 1.95, 1.9642857... The order is 1 and the
+# limit 2 exactly; the one-ratio formula with r = 1.4 would give log(3.5) / log(1.4) = 3.72.
+sizes = [0.1, 0.05, 1 / 28]
+order, limit, bar = lc.error_bar([2 - h for h in sizes], sizes)
+check("two ratios, p = 1: order", order, 1.0, 1e-9)
+check("two ratios, p = 1: limit", limit, 2.0, 1e-9)
+# GCI = 1.25 |e21| / (r21 - 1) = 1.25 * (0.05 - 1/28) / 0.4
+check("two ratios, p = 1: error bar", bar, 1.25 * (0.05 - 1 / 28) / 0.4, 1e-12)
+
+# q = 2 - h^2 on the same sizes: order 2 (the limit then uses the capped order 1:
+# q1 + e21 / (1.4 - 1), with e21 = 1/400 - 1/784).
+order, limit, bar = lc.error_bar([2 - h * h for h in sizes], sizes)
+check("two ratios, p = 2: order", order, 2.0, 1e-9)
+check("two ratios, p = 2: limit (order capped at 1)", limit,
+      2 - 1 / 784 + (1 / 400 - 1 / 784) / 0.4, 1e-12)
+
+# A last change far below the one before (0.5 then 1e-9 on two ratios): a large order (about
+# 29: at large p, h3^p and h2^p dominate the changes, so e32 / e21 -> (h3 / h2)^p = 2^p =
+# 5e8); the limit and the bar use the capped order 1.
+order, limit, bar = lc.error_bar([1.0, 1.5, 1.5 + 1e-9], sizes)
+check("vanishing change: order near log(5e8) / log(2)", order, math.log(5e8) / math.log(2),
+      0.01)
+check("vanishing change: error bar", bar, 1.25e-9 / 0.4, 1e-15)
+# Changes that shrink more slowly than any positive order allows on these ratios (0.5 then
+# 0.49: e32 / e21 = 1.02 < log 2 / log 1.4): no order, and the bar is 1.25 x the larger.
+order, limit, bar = lc.error_bar([1.0, 1.5, 1.99], sizes)
+check("slow changes: error bar", bar, 1.25 * 0.5, 1e-12)
+if not math.isnan(order):
+    failures.append(f"slow changes: order {order} should be nan")
+
+# Changes of opposite sign: no order, no limit, the bar 1.25 x the larger change.
+order, limit, bar = lc.error_bar([1.0, 1.5, 1.4], sizes)
+check("oscillating: error bar", bar, 1.25 * 0.5, 1e-12)
+if not (math.isnan(order) and math.isnan(limit)):
+    failures.append("oscillating: order and limit should be nan")
+
+if failures:
+    sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
+print("all checks passed")
