@@ -11,6 +11,9 @@
 ///
 /// Scenes: levee_drawdown = the 'drawdown' stage of inputs/levee_drawdown (Mohr-Coulomb,
 /// unsaturated, total head with a seepage face; 2,757 points) from its K0 state, 400 steps;
+/// levee_drawdown@H = the same with `Element Size (m): H` (e.g. @0.05: 44,481 points, the
+/// finest mesh of the convergence study), at least 1.1e6 point updates and 100 steps a
+/// repeat;
 /// block-1e6 = a saturated Mohr-Coulomb block of 500 x 500 quads, 4 points each (1,000,000
 /// points) in a 520 x 520 mesh, 10 steps; any scene of argine_benchmark (BenchmarkScenes.hpp,
 /// ~1e5 points), 50 steps; "schemes" = the Mohr-Coulomb block on each shape family and
@@ -26,9 +29,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,19 +61,44 @@ struct Problem {
   int steps = 10;
 };
 
-Problem leveeDrawdown() {
-  const Deck deck =
+/// levee_drawdown on the deck's mesh, or with `Element Size (m)` set to element_size (> 0):
+/// the same scene refined as scripts/convergence.sh refines it, for the step's rate per point
+/// at the resolutions of the convergence study (the finest, 0.05 m: 44,481 points). The steps
+/// keep at least 1.1e6 point updates and 100 steps a repeat (fewer steps weigh the set-up
+/// of a repeat, a fresh copy of the points, too much: 24 steps of the 0.05 m mesh read a third
+/// slower per point than 100).
+Problem leveeDrawdown(const std::string& name, Real element_size) {
+  Deck deck =
       readDeck(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/levee_drawdown.yaml");
+  if (element_size > 0) deck.mesh.generator.element_size = element_size;
   Problem problem;
-  problem.name = "levee_drawdown";
+  problem.name = name;
   problem.mesh = loadMesh(deck);
   problem.points = seedPoints(deck, problem.mesh);
   initialisePoints(deck, problem.mesh, problem.points);
   problem.materials = deck.materials;
   problem.stage = deck.stages.at(1);
   applyMaterialChanges(problem.stage.name, problem.stage.material_changes, problem.materials);
-  problem.steps = 400;
+  problem.steps = std::max(100, static_cast<int>(1.1e6 / problem.points.count));
   return problem;
+}
+
+constexpr const char* kLeveeDrawdown = "levee_drawdown";
+
+/// The element size of "levee_drawdown@H" (H in m), 0 for "levee_drawdown" (the deck's mesh);
+/// std::invalid_argument for anything else that starts with levee_drawdown.
+Real leveeElementSize(const std::string& name) {
+  const std::string base = kLeveeDrawdown;
+  if (name == base) return 0;
+  if (name.size() > base.size() + 1 && name[base.size()] == '@') {
+    const std::string text = name.substr(base.size() + 1);
+    char* end = nullptr;
+    const double size = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() + text.size() && size > 0 && std::isfinite(size)) return size;
+  }
+  throw std::invalid_argument("benchmark scene '" + name +
+                              "': expected levee_drawdown or levee_drawdown@H with an element "
+                              "size H > 0 in m, e.g. levee_drawdown@0.05");
 }
 
 /// A scene of argine_benchmark (BenchmarkScenes.hpp).
@@ -301,9 +331,10 @@ int run(int argc, char** argv) {
   bool ok = true;
   std::vector<ProblemResult> results;
   for (const auto& name : scenes) {
-    Problem problem = name == "levee_drawdown" ? leveeDrawdown()
-                      : name == "block-1e6"    ? millionPointBlock()
-                                               : benchmarkScene(name);
+    Problem problem = name.rfind(kLeveeDrawdown, 0) == 0
+                          ? leveeDrawdown(name, leveeElementSize(name))
+                      : name == "block-1e6" ? millionPointBlock()
+                                            : benchmarkScene(name);
     if (options.has("steps")) problem.steps = static_cast<int>(options.number("steps", 10));
     results.push_back(runProblem(problem, settings));
     ok = results.back().finite && ok;
