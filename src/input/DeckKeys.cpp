@@ -843,12 +843,25 @@ ListSchema stageKeys() {
                             "phases, conserving angular momentum and leaving no point velocity "
                             "the grid cannot see; TPIC: v_p from the grid, C_p the velocity "
                             "gradient of the remapped field, robust where points barely reach a "
-                            "node (doc/theory.md Sec. 3.11); by shape functions: APIC on GIMP "
+                            "node (doc/theory.md Sec. 3.11); XPIC: extended PIC of order m "
+                            "(Hammerquist and Nairn 2017), FLIP's update with the grid-invisible "
+                            "part of the point velocities removed each step and a resolved mode "
+                            "damped by (1 - lambda)^m instead of PIC's (1 - lambda) (XPIC Order); "
+                            "by shape functions: APIC on GIMP "
                             "and B-spline meshes (the scheme for failure stages), FLIP on "
                             "linear shapes (the thesis; doc/theory.md, 'The scheme for failure "
                             "stages')")
                 .byDefault(std::string(kTransferByShapeFunctions))
                 .when("Solver", {"explicit", "quasi-static", "fixed skeleton"}));
+  stage.add(KeySpec::integer("XPIC Order",
+                             "m of XPIC(m): the terms of the series [I - (I - S+ S)^m] of the "
+                             "point velocities kept each step, m - 1 extra G2P/P2G passes; 1 is "
+                             "PIC, 2 already keeps a resolved mode to (kh)^4 per step "
+                             "(doc/theory.md Sec. 3.6)")
+                .atLeast(1)
+                .atMost(8)
+                .byDefault(2LL)
+                .when("Velocity Transfer", {"XPIC"}));
   stage.add(KeySpec::real("Solid PIC Fraction", "-",
                           "share of the PIC update in the solid point velocities, per step; "
                           "0: FLIP (the thesis); removes point-scale velocity noise in "

@@ -484,6 +484,8 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
                              deckWord(kTransferSchemeWords, spec.transfer) + " (the default on " +
                              deckWord(kShapeFamilyWords, shapes) +
                              " shape functions); set 'Velocity Transfer: FLIP' or remove the key");
+  if (spec.transfer == TransferScheme::Xpic)
+    spec.xpic_order = static_cast<int>(stage.integer("XPIC Order"));
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.hold_liquid_pressure =

@@ -133,7 +133,10 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
     liquid_made_inside_i_ = Kokkos::View<Real*, MemSpace>("liquid_made_inside_i", mesh_.numNodes());
   momentum_.mass_scaling = stage.mass_scaling;
   transfer_.scheme = stage.transfer;
-  transfer_.blend = VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
+  transfer_.blend = stage.transfer == TransferScheme::Xpic  // the filtered v* in full
+                        ? VelocityBlend{1, 1}
+                        : VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
+  transfer_.xpic_order = stage.xpic_order;
   dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   momentum_.liquid_with_solid = stage.hold_liquid_pressure;
@@ -177,7 +180,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
           for (int c = 0; c < kAffineComponents; ++c)
             pts.affine_velocity_liquid(p, c) = pts.affine_velocity_solid(p, c);
         });
-  if (transfer_.scheme == TransferScheme::Flip)  // a FLIP stage after an APIC one: no C_p
+  if (!carriesAffineVelocity(transfer_.scheme))  // a FLIP stage after an APIC one: no C_p
     Kokkos::parallel_for(
         "clear_affine_velocities", Kokkos::RangePolicy<ExecSpace>(0, points_.count),
         KOKKOS_LAMBDA(const int p) {
@@ -496,19 +499,23 @@ void ExplicitTwoPhaseSolver::applyVelocityBoundaryConditions() {
 void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // APIC interpolates the grid's updated velocities, with the same conditions as the nodal
   // velocities of step 4 (a fixed node's v~ is zero, as its point neighbours then see it).
-  if (transfer_.scheme != TransferScheme::Flip) {  // APIC, TPIC
+  if (carriesAffineVelocity(transfer_.scheme)) {  // APIC, TPIC
     advanceNodalVelocities(nodes_in_use_, dt, grid_);
     constrainNodalVelocities();
   }
+  // XPIC: the t^k nodal velocities the PIC shares take become v* (XpicFilter.hpp), each
+  // round trip's momenta completed as the remap's
+  if (transfer_.scheme == TransferScheme::Xpic)
+    filterNodalVelocitiesXpic(transfer_.xpic_order, shapes_, table_.liquidCarrying(), nodes_in_use_,
+                              points_, node_records_, grid_, xpic_scratch_, gridCompensation(),
+                              [&] { completeRemappedMomenta(); });
   // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),
   // and sums the kinetic energies, in the same pass over the points.
   kinetic_ = updatePointVelocitiesAndMapMomenta(shapes_, table_.liquidCarrying(), nodes_in_use_, dt,
                                                 transfer_, points_, node_records_, grid_,
                                                 gridCompensation());
-  if (exchange_)  // (kinetic_: end of step)
-    sumMomentaAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
+  completeRemappedMomenta();  // (kinetic_: end of step)
   if (reproducible_sums_) {
-    foldCompensatedMomenta(nodes_in_use_, grid_, grid_lo_);
     // the run totals too: the kernel's energies again, compensated (same terms)
     kinetic_pairs_ = compensatedKineticEnergies(
         points_.element, points_.material, table_.liquidCarrying(), points_.mass_solid,
@@ -516,6 +523,12 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
     kinetic_.solid = kinetic_pairs_.solid.value();
     kinetic_.liquid = kinetic_pairs_.liquid.value();
   }
+}
+
+void ExplicitTwoPhaseSolver::completeRemappedMomenta() {
+  if (exchange_)
+    sumMomentaAtSharedNodes(*exchange_, grid_, reproducible_sums_ ? &grid_lo_ : nullptr);
+  if (reproducible_sums_) foldCompensatedMomenta(nodes_in_use_, grid_, grid_lo_);
 }
 
 void ExplicitTwoPhaseSolver::updateNodalVelocities() {

@@ -26,17 +26,18 @@ template <TransferScheme kScheme>
 using Scheme = std::integral_constant<TransferScheme, kScheme>;
 
 /// Calls f(family, scheme) with the shape family of `shapes` (withShapeFamily) and the
-/// scheme of `transfer` as a Scheme<>: both chosen once per call.
+/// kernels' scheme of `transfer` (kernelScheme) as a Scheme<>: both chosen once per call.
 template <class Function>
 void withFamilyAndScheme(const PointShapes& shapes, const TransferSettings& transfer,
                          Function&& f) {
   withShapeFamily(shapes, [&](auto family) {
-    switch (transfer.scheme) {
+    switch (kernelScheme(transfer.scheme)) {
       case TransferScheme::Apic:
         return f(family, Scheme<TransferScheme::Apic>{});
       case TransferScheme::Tpic:
         return f(family, Scheme<TransferScheme::Tpic>{});
       case TransferScheme::Flip:
+      case TransferScheme::Xpic:
         break;
     }
     f(family, Scheme<TransferScheme::Flip>{});
@@ -46,7 +47,7 @@ void withFamilyAndScheme(const PointShapes& shapes, const TransferSettings& tran
 /// Whether the momenta a point gives its nodes carry its affine part C_p (x_i - x_p) in the
 /// P2G of step 1.
 constexpr bool affineMomenta(TransferScheme scheme) {
-  return scheme != TransferScheme::Flip;
+  return carriesAffineVelocity(scheme);
 }
 
 /// Whether Family is the grid families' (one point at a time, GridPointTransfers.hpp).

@@ -1,6 +1,6 @@
 // The stage key `Velocity Transfer` when a deck does not name it: APIC on the grid families
 // (the scheme for failure stages, doc/theory.md), FLIP on linear shapes (the thesis); and
-// the PIC fractions, which blend FLIP only.
+// the PIC fractions, which blend FLIP only; XPIC's order.
 #include "DeckTestSupport.hpp"
 #include "argine/transfer/TransferScheme.hpp"
 
@@ -61,6 +61,27 @@ TEST(TransferDefault, PicFractionsNeedFlip) {
                                "Liquid PIC Fraction: 0.1"));
       },
       "Stages/load/Liquid PIC Fraction", "Velocity Transfer");
+}
+
+TEST(TransferDefault, XpicTakesItsOrderAndNoPicFraction) {
+  const std::string xpic = withStageKey(kBaseDeck, "Velocity Transfer: XPIC");
+  const Deck plain = parseText(xpic);
+  EXPECT_EQ(plain.stages[0].transfer, TransferScheme::Xpic);
+  EXPECT_EQ(plain.stages[0].xpic_order, 2);  // the schema's default
+  EXPECT_EQ(parseText(withStageKey(xpic, "XPIC Order: 5")).stages[0].xpic_order, 5);
+  expectInputError([&] { parseText(withStageKey(xpic, "XPIC Order: 0")); },
+                   "Stages/load/XPIC Order", "1");
+  expectInputError([&] { parseText(withStageKey(xpic, "XPIC Order: 9")); },
+                   "Stages/load/XPIC Order", "8");
+  // the order belongs to XPIC, the PIC fractions to FLIP (XPIC takes both shares as 1)
+  expectInputError(
+      [&] {
+        parseText(
+            withStageKey(withStageKey(kBaseDeck, "Velocity Transfer: APIC"), "XPIC Order: 3"));
+      },
+      "Stages/load/XPIC Order", "Velocity Transfer");
+  expectInputError([&] { parseText(withStageKey(xpic, "Solid PIC Fraction: 0.1")); },
+                   "Stages/load/Solid PIC Fraction", "Velocity Transfer");
 }
 
 }  // namespace

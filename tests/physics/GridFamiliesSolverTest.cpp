@@ -120,13 +120,14 @@ INSTANTIATE_TEST_SUITE_P(
     Families, GridFamilies,
     ::testing::Combine(::testing::Values(ShapeFamily::Gimp, ShapeFamily::BSpline),
                        ::testing::Values(TransferScheme::Flip, TransferScheme::Apic,
-                                         TransferScheme::Tpic)),
+                                         TransferScheme::Tpic, TransferScheme::Xpic)),
     [](const auto& info) {
       const ShapeFamily family = std::get<0>(info.param);
       const TransferScheme scheme = std::get<1>(info.param);
       return std::string(family == ShapeFamily::Gimp ? "Gimp" : "BSpline") +
              (scheme == TransferScheme::Apic   ? "Apic"
               : scheme == TransferScheme::Tpic ? "Tpic"
+              : scheme == TransferScheme::Xpic ? "Xpic"
                                                : "Flip");
     });
 

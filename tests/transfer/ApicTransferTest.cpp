@@ -18,16 +18,7 @@ namespace argine {
 namespace {
 
 using test::hostCopy;
-
-/// Material 0 carries liquid, material 1 is dry.
-Kokkos::View<const int*, MemSpace> liquidFlags() {
-  Kokkos::View<int*, MemSpace> flags("liquid_m", 2);
-  auto host = Kokkos::create_mirror_view(flags);
-  host(0) = 1;
-  host(1) = 0;
-  Kokkos::deep_copy(flags, host);
-  return flags;
-}
+using test::liquidFlags;
 
 /// A scene of nx x ny cells of `type` with points in every element (every third dry),
 /// random masses and positions jittered inside their elements' interiors (the shapes are

@@ -77,6 +77,17 @@ inline Mesh rectangleMesh(int nx, int ny, Real width, Real height, ElementType t
   return mesh;
 }
 
+/// The liquid flags of two materials (LiquidCarrying): material 0 carries liquid, material
+/// 1 is dry.
+inline Kokkos::View<const int*, MemSpace> liquidFlags() {
+  Kokkos::View<int*, MemSpace> flags("liquid_m", 2);
+  auto host = Kokkos::create_mirror_view(flags);
+  host(0) = 1;
+  host(1) = 0;
+  Kokkos::deep_copy(flags, host);
+  return flags;
+}
+
 /// rectangleMesh of quad4 as a structured grid of nx x ny cells (what generateRectangle
 /// sets), with the transfers on the grid family `family` (GIMP, B-spline).
 inline Mesh gridMesh(int nx, int ny, Real width, Real height, ShapeFamily family, Real x0 = 0,

@@ -24,6 +24,7 @@ namespace argine {
 namespace {
 
 using test::hostCopy;
+using test::liquidFlags;
 
 /// Random point masses, velocities and states; material 0 carries liquid, material 1 is dry
 /// (every third point).
@@ -68,15 +69,6 @@ ActiveNodes activeNodesOf(const Mesh& mesh, const MaterialPoints& points) {
   ActiveNodes active(mesh.numNodes());
   active.rebuild(mesh, points);
   return active;
-}
-
-Kokkos::View<const int*, MemSpace> liquidFlags() {
-  Kokkos::View<int*, MemSpace> flags("liquid_m", 2);
-  auto host = Kokkos::create_mirror_view(flags);
-  host(0) = 1;  // saturated
-  host(1) = 0;  // dry
-  Kokkos::deep_copy(flags, host);
-  return flags;
 }
 
 /// A rectangle of nx x ny cells with uniformly seeded, randomised points (randomise), their

@@ -1,6 +1,6 @@
 // Cell crossing against cost (doc/verification.md "Cell crossing", P9 item 7): the deck's
 // soft column settling under its weight (cell_crossing.yaml), run for every transfer scheme
-// (FLIP, APIC, TPIC) x shape family (linear, GIMP, B-spline) on 8 ... 64 cells, with the
+// (FLIP, APIC, TPIC, XPIC) x shape family (linear, GIMP, B-spline) on 8 ... 64 cells, with the
 // exact large-deformation answer of every point:
 //   sigma_yy = -rho_0 g (H - Y),  y(Y) = (exp(-k (H - Y)) - exp(-k H)) / k,  k = rho_0 g / E
 // (Y the point's initial height; equilibrium carries the weight above, and argine's rate form

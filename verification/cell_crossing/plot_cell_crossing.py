@@ -11,7 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {"linear": "o-", "GIMP": "s-", "B-spline": "^-"}
-COLOUR = {"FLIP": "tab:red", "APIC": "tab:blue", "TPIC": "tab:green"}
+COLOUR = {"FLIP": "tab:red", "APIC": "tab:blue", "TPIC": "tab:green", "XPIC": "tab:purple"}
 
 
 def main():

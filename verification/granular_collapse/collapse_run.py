@@ -2,7 +2,7 @@
 """Runs one V7 granular column collapse with `argine run` and measures it.
 
   collapse_run.py --deck collapse_a2.yaml [--cells 20] [--shape linear|GIMP|B-spline]
-                  [--transfer FLIP|APIC|TPIC] [--work DIR] [--csv FILE] [--profiles DIR]
+                  [--transfer FLIP|APIC|TPIC|XPIC] [--work DIR] [--csv FILE] [--profiles DIR]
                   [--set 'KEY=VALUE' ...] [--without-side-walls] [--tag-suffix S]
                   [--argine build/argine] [--keep]
                   [--skip-existing] [--new-csv]
@@ -126,7 +126,7 @@ def main():
     parser.add_argument("--deck", required=True)
     parser.add_argument("--cells", type=int, help="cells per column length L0")
     parser.add_argument("--shape", choices=["linear", "GIMP", "B-spline"])
-    parser.add_argument("--transfer", choices=["FLIP", "APIC", "TPIC"])
+    parser.add_argument("--transfer", choices=["FLIP", "APIC", "TPIC", "XPIC"])
     parser.add_argument("--work", default=os.path.join(ROOT, "build", "verification",
                                                        "granular_collapse", "runs"))
     parser.add_argument("--csv")

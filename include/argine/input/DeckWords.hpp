@@ -90,6 +90,7 @@ inline constexpr DeckWord<TransferScheme> kTransferSchemeWords[] = {
     {"FLIP", TransferScheme::Flip},
     {"APIC", TransferScheme::Apic},
     {"TPIC", TransferScheme::Tpic},
+    {"XPIC", TransferScheme::Xpic},
 };
 /// The `Velocity Transfer` word (and default) that leaves the choice to the mesh's shape
 /// functions (transferForShapes).

@@ -92,6 +92,7 @@
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/PointShapes.hpp"
 #include "argine/transfer/TwoPhaseTransfer.hpp"
+#include "argine/transfer/XpicFilter.hpp"
 
 namespace argine {
 
@@ -274,6 +275,8 @@ class ExplicitTwoPhaseSolver {
   void applyVelocityBoundaryConditions();  // of updateNodalVelocities
   void updatePointVelocities(Real dt);
   void updateNodalVelocities();
+  /// The remapped momenta summed over the ranks and folded (reproducible sums).
+  void completeRemappedMomenta();
   void constrainNodalVelocities();  // velocity conditions and hydraulic corrections
   void computeStrainIncrements(Real dt);
   void accountBoundaryFluxes(Real dt);
@@ -301,6 +304,7 @@ class ExplicitTwoPhaseSolver {
   PointRates rates_;
   GridFields grid_;
   NodeRecords node_records_;  ///< scratch of the transfer kernels (packed nodal rows)
+  XpicScratch xpic_scratch_;  ///< XPIC's filtered velocities and the points' own
   bool reproducible_sums_ = false;
   LowParts<GridFields> grid_lo_;                  ///< reproducible sums: low parts of grid_'s
   LowParts<BoundaryGradientFields> boundary_lo_;  ///< ... and of boundary_fields_' sums

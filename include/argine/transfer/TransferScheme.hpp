@@ -30,7 +30,27 @@ enum class TransferScheme {
   /// Nakamura et al. 2023 (Comput. Methods Appl. Mech. Engrg. 404), whose C_p is the grid
   /// velocity gradient at the point.
   Tpic,
+  /// Extended PIC of order m (XPIC(m), Hammerquist and Nairn 2017, Comput. Methods Appl.
+  /// Mech. Engrg. 318): the FLIP update with the t^k nodal velocities v_i replaced by
+  /// v*_i = sum_{k=1..m} (-1)^(k+1) C(m, k) (S S+)^(k-1) v_i, S the mass-weighted P2G of
+  /// point velocities, S+ the G2P (XpicFilter.hpp), and then taken in full (a PIC share of 1
+  /// per phase): v_p <- S+ (v* + dt a). Of the point velocities this keeps [I - (I - S+ S)^m] v_p:
+  /// what the grid cannot see (S v = 0) goes at once, as with PIC, but a resolved mode, which
+  /// PIC damps by a factor lambda < 1 of S+ S each step, loses only (1 - lambda)^m: FLIP's low
+  /// dissipation without its grid-invisible noise. m - 1 extra G2P/P2G passes a step.
+  Xpic,
 };
+
+/// The kernels' scheme of a stage's transfer: XPIC is FLIP's update with both PIC shares 1
+/// on the filtered nodal velocities (filterNodalVelocitiesXpic before the update).
+constexpr TransferScheme kernelScheme(TransferScheme scheme) {
+  return scheme == TransferScheme::Xpic ? TransferScheme::Flip : scheme;
+}
+
+/// Whether the points of a stage carry an affine velocity matrix C_p (APIC, TPIC).
+constexpr bool carriesAffineVelocity(TransferScheme scheme) {
+  return scheme == TransferScheme::Apic || scheme == TransferScheme::Tpic;
+}
 
 /// The transfer a stage takes when its deck does not name one (`Velocity Transfer: by shape
 /// functions`, the default): APIC on the grid families, the scheme for failure stages chosen
@@ -63,9 +83,10 @@ struct VelocityBlend {
 /// What the velocity update and the momentum transfers of a stage need.
 struct TransferSettings {
   TransferScheme scheme = TransferScheme::Flip;
-  VelocityBlend blend;  ///< FLIP only
+  VelocityBlend blend;  ///< FLIP only (XPIC: both shares 1)
   /// APIC: the mesh's node coordinates x_i (the momenta carry C_p (x_i - x_p)).
   Kokkos::View<const Real* [kDim], MemSpace> node_coordinates;
+  int xpic_order = 0;  ///< XPIC: its order m >= 1 (1 is PIC)
 };
 
 }  // namespace argine
