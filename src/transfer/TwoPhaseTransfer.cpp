@@ -44,12 +44,6 @@ void withFamilyAndScheme(const PointShapes& shapes, const TransferSettings& tran
   });
 }
 
-/// Whether the momenta a point gives its nodes carry its affine part C_p (x_i - x_p) in the
-/// P2G of step 1.
-constexpr bool affineMomenta(TransferScheme scheme) {
-  return carriesAffineVelocity(scheme);
-}
-
 /// Whether Family is the grid families' (one point at a time, GridPointTransfers.hpp).
 template <class Family>
 inline constexpr bool kOnGrid = std::is_same_v<Family, GridShapeFamily>;
@@ -379,7 +373,8 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
   const auto local_p = points.local;
   const int count = points.count;
   constexpr int kNodes = Family::kNodes;
-  constexpr bool kAffine = affineMomenta(kScheme);
+  // the momenta of step 1's P2G carry C_p (x_i - x_p) where the points have C_p
+  constexpr bool kAffine = carriesAffineVelocity(kScheme);
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The
   // grid families: point by point, by blocks of slots (GridPointTransfers.hpp).
   const auto body = KOKKOS_LAMBDA(const int chunk, const auto& sums, Real&, Real&, int&) {
