@@ -854,14 +854,32 @@ ListSchema stageKeys() {
                 .byDefault(std::string(kTransferByShapeFunctions))
                 .when("Solver", {"explicit", "quasi-static", "fixed skeleton"}));
   stage.add(KeySpec::integer("XPIC Order",
-                             "m of XPIC(m): the terms of the series [I - (I - S+ S)^m] of the "
-                             "point velocities kept each step, m - 1 extra G2P/P2G passes; 1 is "
-                             "PIC, 2 already keeps a resolved mode to (kh)^4 per step "
-                             "(doc/theory.md Sec. 3.6)")
+                             "m of XPIC(m): the degree of the polynomial in S+ S that filters "
+                             "the point velocities each step, m - 1 extra G2P/P2G passes; 1 is "
+                             "PIC, 2 already keeps a resolved mode to (kh)^4 per step; at most 8 "
+                             "with the binomial series (its alternating terms lose digits "
+                             "beyond), 32 with Chebyshev's (doc/theory.md Sec. 3.6)")
                 .atLeast(1)
-                .atMost(8)
+                .atMost(32)
                 .byDefault(2LL)
                 .when("Velocity Transfer", {"XPIC"}));
+  stage.add(KeySpec::choice("XPIC Polynomial", {"binomial", "Chebyshev"},
+                            "binomial: [I - (I - S+ S)^m] (Hammerquist and Nairn 2017), a mode "
+                            "of the round trip's eigenvalue lambda keeps 1 - (1 - lambda)^m; "
+                            "Chebyshev: the same m - 1 passes as a Chebyshev iteration towards "
+                            "the consistent-mass projection, keeping 1 - (1 - lambda)^j "
+                            "s_k(lambda)^2 (k = (m - 1) / 2, j = m - 2k), nearly all of every "
+                            "mode with lambda >= XPIC Lower Eigenvalue, never more than all")
+                .byDefault(std::string("binomial"))
+                .when("Velocity Transfer", {"XPIC"}));
+  stage.add(KeySpec::real("XPIC Lower Eigenvalue", "-",
+                          "a: the lower end of the eigenvalues of S+ S that the Chebyshev "
+                          "polynomial keeps (m = 9, a = 0.05: at least 90.5 % of every such "
+                          "mode each step; the smaller a, the larger m it needs)")
+                .above(0)
+                .below(1)
+                .byDefault(0.05)
+                .when("XPIC Polynomial", {"Chebyshev"}));
   stage.add(KeySpec::real("Solid PIC Fraction", "-",
                           "share of the PIC update in the solid point velocities, per step; "
                           "0: FLIP (the thesis); removes point-scale velocity noise in "

@@ -484,8 +484,17 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
                              deckWord(kTransferSchemeWords, spec.transfer) + " (the default on " +
                              deckWord(kShapeFamilyWords, shapes) +
                              " shape functions); set 'Velocity Transfer: FLIP' or remove the key");
-  if (spec.transfer == TransferScheme::Xpic)
-    spec.xpic_order = static_cast<int>(stage.integer("XPIC Order"));
+  if (spec.transfer == TransferScheme::Xpic) {
+    spec.xpic.order = static_cast<int>(stage.integer("XPIC Order"));
+    const bool chebyshev = stage.word("XPIC Polynomial") == "Chebyshev";
+    if (!chebyshev && spec.xpic.order > 8)
+      throw InputError(stage.pathOf("XPIC Order"),
+                       "the binomial series takes at most 8 terms (its alternating "
+                       "coefficients, up to C(m, m/2), lose digits beyond); got " +
+                           std::to_string(spec.xpic.order) +
+                           ": use 'XPIC Polynomial: Chebyshev' for more passes");
+    spec.xpic.lower_eigenvalue = chebyshev ? stage.real("XPIC Lower Eigenvalue") : 0.0;
+  }
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.hold_liquid_pressure =

@@ -136,7 +136,7 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   transfer_.blend = stage.transfer == TransferScheme::Xpic  // the filtered v* in full
                         ? VelocityBlend{1, 1}
                         : VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
-  transfer_.xpic_order = stage.xpic_order;
+  transfer_.xpic = stage.xpic;
   dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;
   momentum_.liquid_with_solid = stage.hold_liquid_pressure;
@@ -506,7 +506,7 @@ void ExplicitTwoPhaseSolver::updatePointVelocities(Real dt) {
   // XPIC: the t^k nodal velocities the PIC shares take become v* (XpicFilter.hpp), each
   // round trip's momenta completed as the remap's
   if (transfer_.scheme == TransferScheme::Xpic)
-    filterNodalVelocitiesXpic(transfer_.xpic_order, shapes_, table_.liquidCarrying(), nodes_in_use_,
+    filterNodalVelocitiesXpic(transfer_.xpic, shapes_, table_.liquidCarrying(), nodes_in_use_,
                               points_, node_records_, grid_, xpic_scratch_, gridCompensation(),
                               [&] { completeRemappedMomenta(); });
   // The G2P of the accelerations also scatters the new point momenta (the remap of step 4),

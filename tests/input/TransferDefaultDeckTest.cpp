@@ -67,12 +67,28 @@ TEST(TransferDefault, XpicTakesItsOrderAndNoPicFraction) {
   const std::string xpic = withStageKey(kBaseDeck, "Velocity Transfer: XPIC");
   const Deck plain = parseText(xpic);
   EXPECT_EQ(plain.stages[0].transfer, TransferScheme::Xpic);
-  EXPECT_EQ(plain.stages[0].xpic_order, 2);  // the schema's default
-  EXPECT_EQ(parseText(withStageKey(xpic, "XPIC Order: 5")).stages[0].xpic_order, 5);
+  EXPECT_EQ(plain.stages[0].xpic.order, 2);               // the schema's default
+  EXPECT_EQ(plain.stages[0].xpic.lower_eigenvalue, 0.0);  // the binomial series
+  EXPECT_EQ(parseText(withStageKey(xpic, "XPIC Order: 5")).stages[0].xpic.order, 5);
   expectInputError([&] { parseText(withStageKey(xpic, "XPIC Order: 0")); },
                    "Stages/load/XPIC Order", "1");
   expectInputError([&] { parseText(withStageKey(xpic, "XPIC Order: 9")); },
-                   "Stages/load/XPIC Order", "8");
+                   "Stages/load/XPIC Order", "Chebyshev");
+  // Chebyshev's polynomial: up to 32 terms, its lower eigenvalue in (0, 1), default 0.05
+  const std::string chebyshev = withStageKey(xpic, "XPIC Polynomial: Chebyshev");
+  const Deck nine = parseText(withStageKey(chebyshev, "XPIC Order: 9"));
+  EXPECT_EQ(nine.stages[0].xpic.order, 9);
+  EXPECT_EQ(nine.stages[0].xpic.lower_eigenvalue, 0.05);
+  EXPECT_EQ(parseText(withStageKey(chebyshev, "XPIC Lower Eigenvalue: 0.2"))
+                .stages[0]
+                .xpic.lower_eigenvalue,
+            0.2);
+  expectInputError([&] { parseText(withStageKey(chebyshev, "XPIC Order: 33")); },
+                   "Stages/load/XPIC Order", "32");
+  expectInputError([&] { parseText(withStageKey(chebyshev, "XPIC Lower Eigenvalue: 1")); },
+                   "Stages/load/XPIC Lower Eigenvalue", "1");
+  expectInputError([&] { parseText(withStageKey(xpic, "XPIC Lower Eigenvalue: 0.1")); },
+                   "Stages/load/XPIC Lower Eigenvalue", "XPIC Polynomial");
   // the order belongs to XPIC, the PIC fractions to FLIP (XPIC takes both shares as 1)
   expectInputError(
       [&] {

@@ -169,18 +169,23 @@ TEST(GridFamiliesRanksBlock, GimpApicMohrCoulombBlockEqualsOneRankBitForBit) {
 // does: the sliding blocks, dry and saturated, cross the rank border with the one-rank bits
 // (reproducible sums), and so does the slumping slope, whose velocities vary across the
 // shared nodes (the filter's work); its filtered slump moves no point across the border
-// within the harness' steps, so it is compared without migration.
+// within the harness' steps, so it is compared without migration. The binomial series of
+// order 2 and Chebyshev's of order 5 (its iteration's nodal combinations on both ranks).
 TEST(GridFamiliesRanksXpic, SlidingBlocksAndSlumpingSlopeEqualOneRankBitForBit) {
-  for (const ShapeFamily family : {ShapeFamily::Gimp, ShapeFamily::BSpline}) {
-    SCOPED_TRACE(family == ShapeFamily::Gimp ? "GIMP" : "B-spline");
-    for (const PhaseModel phase : {PhaseModel::Dry, PhaseModel::Saturated}) {
-      Scene scene = slidingBlock(family, TransferScheme::Xpic, phase);
+  for (const XpicPolynomial polynomial : {XpicPolynomial{2, 0.0}, XpicPolynomial{5, 0.1}}) {
+    SCOPED_TRACE(polynomial.lower_eigenvalue > 0 ? "Chebyshev XPIC(5)" : "XPIC(2)");
+    const auto withPolynomial = [&](Scene scene) {
+      for (StageSpec& stage : scene.stages) stage.xpic = polynomial;
       scene.reproducible_sums = true;
-      test::expectSameAsOneRankWithMigration(scene, 0.0);
+      return scene;
+    };
+    for (const ShapeFamily family : {ShapeFamily::Gimp, ShapeFamily::BSpline}) {
+      SCOPED_TRACE(family == ShapeFamily::Gimp ? "GIMP" : "B-spline");
+      for (const PhaseModel phase : {PhaseModel::Dry, PhaseModel::Saturated})
+        test::expectSameAsOneRankWithMigration(
+            withPolynomial(slidingBlock(family, TransferScheme::Xpic, phase)), 0.0);
+      test::expectSameAsOneRank(withPolynomial(slumpingSlope(family, TransferScheme::Xpic)), 0.0);
     }
-    Scene slope = slumpingSlope(family, TransferScheme::Xpic);
-    slope.reproducible_sums = true;
-    test::expectSameAsOneRank(slope, 0.0);
   }
 }
 

@@ -50,10 +50,14 @@ Weights weightsOf(const PointShapes& shapes, int count, int per) {
   return w;
 }
 
-/// [I - (I - P)^m] v of one phase with point masses m (points of m = 0 take no part), P v
-/// = S+ S v: nodal momenta and lumped masses, their ratio interpolated back.
+/// [I - R(P)] v of one phase with point masses m (points of m = 0 take no part), P v = S+ S v:
+/// nodal momenta and lumped masses, their ratio interpolated back. R(P) = (I - P)^m for the
+/// binomial series; for Chebyshev's on [a, 1], (I - P)^j s_k(P)^2 with s_k(P) = T_k((theta I -
+/// P) / delta) / T_k(theta / delta), theta = (1 + a) / 2, delta = (1 - a) / 2, k = (m - 1) / 2,
+/// j = m - 2k, T_k by its three-term recurrence (not the code's Chebyshev iteration).
 std::vector<Real> xpicReference(const Weights& w, const std::vector<Real>& m,
-                                const std::vector<Real>& v, int nodes, int order) {
+                                const std::vector<Real>& v, int nodes,
+                                const XpicPolynomial& polynomial) {
   const int count = static_cast<int>(v.size());
   const auto pic = [&](const std::vector<Real>& x) {
     std::vector<Real> momentum(nodes, 0.0), mass(nodes, 0.0), out(count, 0.0);
@@ -66,8 +70,33 @@ std::vector<Real> xpicReference(const Weights& w, const std::vector<Real>& m,
       for (const auto& [i, N] : w[p]) out[p] += mass[i] > 0 ? N * momentum[i] / mass[i] : 0;
     return out;
   };
-  std::vector<Real> rest = v;  // (I - P)^k v
-  for (int k = 0; k < order; ++k) {
+  const Real a = polynomial.lower_eigenvalue;
+  const int k = a > 0 ? (polynomial.order - 1) / 2 : 0;
+  std::vector<Real> rest = v;                         // R(P) v
+  for (int twice = 0; twice < 2 && k > 0; ++twice) {  // s_k(P) rest, twice
+    const Real theta = (1 + a) / 2, delta = (1 - a) / 2, sigma = theta / delta;
+    const auto shifted = [&](const std::vector<Real>& x) {  // (theta I - P) x / delta
+      const std::vector<Real> picked = pic(x);
+      std::vector<Real> out(count);
+      for (int p = 0; p < count; ++p) out[p] = (theta * x[p] - picked[p]) / delta;
+      return out;
+    };
+    std::vector<Real> before = rest, now = shifted(rest);  // T_0 rest, T_1 rest
+    Real t_before = 1, t_now = sigma;                      // T_0(sigma), T_1(sigma)
+    for (int n = 1; n < k; ++n) {
+      const std::vector<Real> x_now = shifted(now);
+      for (int p = 0; p < count; ++p) {
+        const Real next = 2 * x_now[p] - before[p];
+        before[p] = now[p];
+        now[p] = next;
+      }
+      const Real t_next = 2 * sigma * t_now - t_before;
+      t_before = t_now;
+      t_now = t_next;
+    }
+    for (int p = 0; p < count; ++p) rest[p] = now[p] / t_now;
+  }
+  for (int step = 0; step < polynomial.order - 2 * k; ++step) {  // (I - P)^j
     const std::vector<Real> picked = pic(rest);
     for (int p = 0; p < count; ++p) rest[p] -= picked[p];
   }
@@ -132,7 +161,7 @@ XpicScene makeScene(const Shapes& s, unsigned seed, const Velocity& velocity) {
 /// One XPIC(order) velocity update without forces: the P2G of t^k, the filter, the FLIP
 /// update with both shares 1 (the step's order). Returns whether the filter left the
 /// points' velocities as they were, bit for bit.
-bool xpicUpdate(XpicScene& s, int order) {
+bool xpicUpdate(XpicScene& s, const XpicPolynomial& polynomial) {
   NodeRecords records;
   s.grid.zero(s.active);
   mapPointsToGrid(s.points, s.shapes, liquidFlags(), 0.0, TransferSettings{}, s.active, records,
@@ -142,8 +171,8 @@ bool xpicUpdate(XpicScene& s, int order) {
   Kokkos::deep_copy(s.grid.acceleration_liquid_i, 0.0);
   const auto vs = hostCopy(s.points.velocity_solid), vl = hostCopy(s.points.velocity_liquid);
   XpicScratch scratch;
-  filterNodalVelocitiesXpic(order, s.shapes, liquidFlags(), s.active, s.points, records, s.grid,
-                            scratch, nullptr, {});
+  filterNodalVelocitiesXpic(polynomial, s.shapes, liquidFlags(), s.active, s.points, records,
+                            s.grid, scratch, nullptr, {});
   const auto vs_after = hostCopy(s.points.velocity_solid);
   const auto vl_after = hostCopy(s.points.velocity_liquid);
   bool kept = true;
@@ -160,15 +189,15 @@ bool xpicUpdate(XpicScene& s, int order) {
 
 class XpicOnShapes : public ::testing::TestWithParam<Shapes> {};
 
-TEST_P(XpicOnShapes, KeepsTheTruncatedSeriesOfThePicRoundTripAndTheMomentum) {
+/// Every point velocity of both phases against the dense reference, and the momentum kept.
+void expectPolynomialOfThePicRoundTrip(const Shapes& shapes, const XpicPolynomial& polynomial) {
   const auto random = [](unsigned seed) {
     return [rng = std::make_shared<std::mt19937>(seed)](Real, Real, int, int) {
       return std::uniform_real_distribution<Real>(-1, 1)(*rng);
     };
   };
-  for (const int order : {1, 2, 3, 5}) {
-    SCOPED_TRACE("XPIC(" + std::to_string(order) + ")");
-    XpicScene s = makeScene(GetParam(), 31, random(32));
+  {
+    XpicScene s = makeScene(shapes, 31, random(32));
     const int count = s.points.count, nodes = s.mesh.numNodes();
     const Weights w = weightsOf(s.shapes, count, s.per);
     const auto ms = hostCopy(s.points.mass_solid), rho = hostCopy(s.points.density_liquid);
@@ -180,7 +209,7 @@ TEST_P(XpicOnShapes, KeepsTheTruncatedSeriesOfThePicRoundTripAndTheMomentum) {
       solid_mass[p] = ms(p);
       liquid_mass[p] = material(p) == 0 ? rho(p) * volume(p) : 0;  // as the nodal v_L of t^k
     }
-    EXPECT_TRUE(xpicUpdate(s, order)) << "the filter changed the points' velocities";
+    EXPECT_TRUE(xpicUpdate(s, polynomial)) << "the filter changed the points' velocities";
     const auto vs = hostCopy(s.points.velocity_solid), vl = hostCopy(s.points.velocity_liquid);
     for (int d = 0; d < kDim; ++d) {
       std::vector<Real> solid(count), liquid(count);
@@ -194,8 +223,8 @@ TEST_P(XpicOnShapes, KeepsTheTruncatedSeriesOfThePicRoundTripAndTheMomentum) {
         liquid_momentum += liquid_mass[p] * vl(p, d);
         scale += solid_mass[p] + liquid_mass[p];
       }
-      const std::vector<Real> solid_ref = xpicReference(w, solid_mass, solid, nodes, order);
-      const std::vector<Real> liquid_ref = xpicReference(w, liquid_mass, liquid, nodes, order);
+      const std::vector<Real> solid_ref = xpicReference(w, solid_mass, solid, nodes, polynomial);
+      const std::vector<Real> liquid_ref = xpicReference(w, liquid_mass, liquid, nodes, polynomial);
       for (int p = 0; p < count; ++p) {
         EXPECT_NEAR(vs(p, d), solid_ref[p], 1e-12) << "solid, point " << p;
         if (material(p) == 0) {
@@ -205,6 +234,22 @@ TEST_P(XpicOnShapes, KeepsTheTruncatedSeriesOfThePicRoundTripAndTheMomentum) {
       EXPECT_NEAR(momentum, momentum0, 1e-12 * scale);
       EXPECT_NEAR(liquid_momentum, liquid_momentum0, 1e-12 * scale);
     }
+  }
+}
+
+TEST_P(XpicOnShapes, KeepsTheTruncatedSeriesOfThePicRoundTripAndTheMomentum) {
+  for (const int order : {1, 2, 3, 5}) {
+    SCOPED_TRACE("XPIC(" + std::to_string(order) + ")");
+    expectPolynomialOfThePicRoundTrip(GetParam(), XpicPolynomial{order, 0.0});
+  }
+}
+
+TEST_P(XpicOnShapes, KeepsChebyshevsPolynomialOfThePicRoundTripAndTheMomentum) {
+  // odd and even orders (j = 1, 2), k from 0 (the binomial's m = 2) to 8
+  for (const auto& [order, a] : std::vector<std::pair<int, Real>>{
+           {2, 0.1}, {3, 0.1}, {4, 0.05}, {5, 0.2}, {9, 0.05}, {17, 0.02}}) {
+    SCOPED_TRACE("Chebyshev XPIC(" + std::to_string(order) + "), a = " + std::to_string(a));
+    expectPolynomialOfThePicRoundTrip(GetParam(), XpicPolynomial{order, a});
   }
 }
 
@@ -220,7 +265,7 @@ TEST_P(XpicOnShapes, KeepsASmoothFieldBetterWithEveryOrder) {
     XpicScene s = makeScene(GetParam(), 41, smooth);
     const auto ms = hostCopy(s.points.mass_solid);
     const auto v0 = hostCopy(s.points.velocity_solid);
-    xpicUpdate(s, order);
+    xpicUpdate(s, XpicPolynomial{order, 0.0});
     const auto v = hostCopy(s.points.velocity_solid);
     Real loss = 0;
     for (int p = 0; p < s.points.count; ++p)

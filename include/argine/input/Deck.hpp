@@ -294,7 +294,8 @@ struct StageSpec {
   TransferScheme transfer = TransferScheme::Flip;  ///< `Velocity Transfer`
   Real solid_pic_fraction = 0;   ///< FLIP: PIC share of the solid velocity update (VelocityBlend)
   Real liquid_pic_fraction = 0;  ///< FLIP: PIC share of the liquid velocity update
-  int xpic_order = 2;            ///< XPIC: `XPIC Order` m (TransferScheme::Xpic; as the deck)
+  /// XPIC: `XPIC Order` m and, with `XPIC Polynomial: Chebyshev`, `XPIC Lower Eigenvalue`
+  XpicPolynomial xpic{};
   /// `Liquid Pressure: held` (quasi-static stages): p_L and S_L stay as the stage found them
   /// while the skeleton settles into equilibrium with them; the liquid moves with the solid.
   bool hold_liquid_pressure = false;

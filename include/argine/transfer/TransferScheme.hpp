@@ -80,13 +80,21 @@ struct VelocityBlend {
   Real liquid = 0;  ///< alpha_L: grid share of the liquid's relative velocity update
 };
 
+/// XPIC's filter polynomial (XpicFilter.hpp): order m >= 1 (m - 1 PIC round trips a step; 1
+/// is PIC) and, for the Chebyshev polynomial, the lower end a in (0, 1) of the eigenvalues of
+/// the round trip it keeps (0: the binomial series of Hammerquist and Nairn).
+struct XpicPolynomial {
+  int order = 2;
+  Real lower_eigenvalue = 0;
+};
+
 /// What the velocity update and the momentum transfers of a stage need.
 struct TransferSettings {
   TransferScheme scheme = TransferScheme::Flip;
   VelocityBlend blend;  ///< FLIP only (XPIC: both shares 1)
   /// APIC: the mesh's node coordinates x_i (the momenta carry C_p (x_i - x_p)).
   Kokkos::View<const Real* [kDim], MemSpace> node_coordinates;
-  int xpic_order = 0;  ///< XPIC: its order m >= 1 (1 is PIC)
+  XpicPolynomial xpic{};  ///< XPIC: its order and polynomial
 };
 
 }  // namespace argine
