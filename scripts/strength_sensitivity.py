@@ -14,12 +14,13 @@ about d / slope, and comparing f_c across meshes says whether a mesh changes the
 driving state or only its resistance.
 
   scripts/strength_sensitivity.py DECK --sizes 0.4 0.2 0.1 --factors 0.9 0.95 1 1.05 1.1
-      [--duration S] [--times T ...] [--jobs N] [--figure PNG]
+      [--duration S] [--times T ...] [--jobs N] [--ranks R] [--figure PNG]
 
 Each run's deck is a copy beside DECK (relative file keys keep working, removed afterwards)
 with the element size, the last stage's Material Changes and Duration, a Factor Of Safety
 section (Bishop, critical circle at every output, unless the deck has one) and the output
-name changed. Results in results/strength_sensitivity/<scene>_h<size>_f<factor>/; a run
+name changed. --ranks R runs each deck on R MPI ranks (mpiexec; the same bits as one rank,
+doc/parallel.md). Results in results/strength_sensitivity/<scene>_h<size>_f<factor>/; a run
 whose log says it finished is not repeated. Needs build/argine (./scripts/build.sh).
 """
 
@@ -82,7 +83,7 @@ def write_copy(path, h, f, duration, name):
     return copy
 
 
-def run(argine, path, h, f, duration, out, existing=False):
+def run(argine, path, h, f, duration, out, existing=False, ranks=1):
     scene = os.path.splitext(os.path.basename(path))[0]
     name = f"{scene}_h{h:g}_f{f:g}"
     directory = os.path.join(out, name)
@@ -93,7 +94,8 @@ def run(argine, path, h, f, duration, out, existing=False):
     copy = write_copy(path, h, f, duration, name)
     try:
         with open(log, "w") as handle:
-            status = subprocess.call([argine, "run", copy, "--output", directory],
+            launcher = ["mpiexec", "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []
+            status = subprocess.call(launcher + [argine, "run", copy, "--output", directory],
                                      stdout=handle, stderr=subprocess.STDOUT)
     finally:
         os.remove(copy)
@@ -138,18 +140,21 @@ def main():
     parser.add_argument("--vanish", type=float, default=0.05,
                         help="crest probe |u| (m) below which the slide counts as vanished")
     parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--ranks", type=int, default=1, help="MPI ranks a run")
     parser.add_argument("--existing", action="store_true",
                         help="run nothing: tabulate the (size, factor) pairs whose results exist")
     parser.add_argument("--argine", default=os.path.join(ROOT, "build", "argine"))
     parser.add_argument("--figure")
     args = parser.parse_args()
+    if args.ranks > 1 and os.geteuid() == 0:
+        os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     if not args.existing and not os.path.exists(args.argine):
         sys.exit(f"{args.argine}: not built (run ./scripts/build.sh)")
     out = os.path.join(ROOT, "results", "strength_sensitivity")
     factors = sorted(args.factors)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         jobs = [pool.submit(run, args.argine, os.path.abspath(args.deck), h, f, args.duration, out,
-                            args.existing) for h in args.sizes for f in factors]
+                            args.existing, args.ranks) for h in args.sizes for f in factors]
         done = [job.result() for job in jobs]
     last = max(args.times)
     results = {}
