@@ -8,7 +8,8 @@ One column per run (DIR/NAME_points.e, Exodus II read with SciPy), one row per t
 the event started, the simulation time minus --start): the points at their current
 positions, grey, with those whose last return was to the tension cut-off (plastic_state 3,
 kMohrCoulombTension) in red; a last row maps p_L (kPa) at --pressure-time. The title of each
-panel gives the share of the moved points (|u| > 0.1 m) at the cut-off.
+panel gives the share of the moved points (|u| > 0.1 m) at the cut-off; the same counts are
+printed as a table.
 """
 import argparse
 import os
@@ -48,6 +49,7 @@ def main():
     fig, axes = plt.subplots(rows, len(args.runs), figsize=(6.5 * len(args.runs), 2.6 * rows),
                              squeeze=False, layout="constrained")
     x0, x1, y0, y1 = args.window
+    table = []  # (h, t, points at the cut-off, moved points, moved ones at the cut-off)
     for j, spec in enumerate(args.runs):
         h, directory, name = spec.split(":")[:3]
         time, first_x, first_y, v = lc.read_points(
@@ -64,6 +66,8 @@ def main():
                 moved = np.hypot(v["displacement_x"][k], v["displacement_y"][k]) > lc.MOVED
                 cracked = v["plastic_state"][k] == TENSION
                 share = (cracked & moved).sum() / max(moved.sum(), 1)
+                table.append((h, t, int(cracked.sum()), int(moved.sum()),
+                               int((cracked & moved).sum())))
                 ax.scatter(x, y, s=size, c="lightgrey", linewidths=0)
                 ax.scatter(x[cracked], y[cracked], s=2 * size, c="red", linewidths=0)
                 ax.set_title(f"h = {h} m, {t:g} s after the start: {cracked.sum()} points at the "
@@ -78,6 +82,11 @@ def main():
             ax.set_aspect("equal")
             ax.tick_params(labelsize=7)
     fig.savefig(args.figure, dpi=100)
+    print("| h (m) | t after the start (s) | points at the cut-off | moved points | "
+          "moved at the cut-off (%) |")
+    print("|---:|---:|---:|---:|---:|")
+    for h, t, cracked, moved, both in table:
+        print(f"| {h} | {t:g} | {cracked} | {moved} | {100 * both / max(moved, 1):.1f} |")
     print(f"wrote {args.figure}")
 
 
