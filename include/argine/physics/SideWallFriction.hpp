@@ -25,7 +25,7 @@ namespace argine {
 
 class ActiveNodes;
 class NodalExchange;
-class PointShapes;
+struct PointShapes;
 struct GridFields;
 struct MaterialPoints;
 struct MomentumSettings;
