@@ -107,6 +107,35 @@ void checkMeshSpec(const MeshSpec& mesh) {
 
 }  // namespace input_detail
 
+namespace {
+
+/// Averaging Length (m): an element average (of either increment) to apply it to, and one
+/// length for every material with an element average (they share the patches' sums).
+void checkAveragingLength(const Deck& deck) {
+  const MaterialSpec* first = nullptr;  // the first material with an element average
+  for (const MaterialSpec& material : deck.materials) {
+    const LockingMitigationSpec& locking = material.locking;
+    const bool element = locking.volumetric_strain == IncrementAveraging::Element ||
+                         locking.liquid_pressure == IncrementAveraging::Element;
+    const std::string key =
+        "Materials/" + material.name + "/Locking Mitigation/Averaging Length (m)";
+    if (locking.averaging_length > 0 && !element)
+      throw InputError(key,
+                       "applies to element averages: needs Volumetric Strain Averaging or "
+                       "Liquid Pressure Averaging: element");
+    if (!element) continue;
+    if (first == nullptr) {
+      first = &material;
+    } else if (locking.averaging_length != first->locking.averaging_length) {
+      throw InputError(key, "must be the same for every material with an element average (" +
+                                formatReal(first->locking.averaging_length) + " in material '" +
+                                first->name + "'), got " + formatReal(locking.averaging_length));
+    }
+  }
+}
+
+}  // namespace
+
 void checkDeck(const Deck& deck) {
   input_detail::checkMeshSpec(deck.mesh);
   if (deck.materials.empty()) throw InputError("Materials", "needs at least one material");
@@ -127,6 +156,7 @@ void checkDeck(const Deck& deck) {
                            "), got " + degrees(solid.dilatancy_angle));
   }
 
+  checkAveragingLength(deck);
   input_detail::checkStageAdditions(deck);     // issue P4
   input_detail::checkFactorOfSafety(deck);     // issue P13
   input_detail::checkStrengthReduction(deck);  // issue P13

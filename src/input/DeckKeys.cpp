@@ -253,6 +253,17 @@ ListSchema lockingMitigationKeys() {
                               "the same averaging of the liquid pressure increment of "
                               "saturated points")
                   .byDefault(std::string("none")));
+  locking.add(KeySpec::real("Averaging Length (m)", "m",
+                            "L: the element averages of Volumetric Strain Averaging and Liquid "
+                            "Pressure Averaging are taken over square patches of side L instead "
+                            "of single elements (an element belongs to the patch holding its "
+                            "centre; the patches tile the mesh's bounding box from its lower "
+                            "left corner), so that the averaging length stays L as the mesh is "
+                            "refined (doc/theory.md Sec. 3.3.4); the same L for every material "
+                            "that gives it; 0: one element (a cell of a structured grid whose "
+                            "size is L gives the same patches)")
+                  .atLeast(0)
+                  .byDefault(0.0));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
                             "alpha: each step a point exchanges liquid at alpha k/g (capped for "
                             "stability) with planes of the piezometric pressure p_L + rho_L g y "

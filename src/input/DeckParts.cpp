@@ -378,6 +378,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
   spec.head_stabilisation = locking.real("Liquid Head Stabilisation");
   spec.intra_element_seepage = locking.boolean("Intra-Element Seepage");
   spec.seepage_patch = deckValue(kSeepagePatchWords, locking.word("Seepage Patch"));
+  spec.averaging_length = locking.real("Averaging Length (m)");
   return spec;
 }
 

@@ -81,7 +81,7 @@ ExplicitTwoPhaseSolver::ExplicitTwoPhaseSolver(const Mesh& mesh, MaterialPoints&
   rates_.allocate(points.count);
   evaluatePointShapes(mesh_, points_, shapes_);
   nodes_next_.rebuild(mesh_, points_, &shapes_, {});
-  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes());
+  averaging_ = VolumetricAveraging(table_, mesh_);
   air_path_ = AirPath(table_, mesh_.numElements());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes());
   element_seepage_ = IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes());
@@ -92,7 +92,8 @@ void ExplicitTwoPhaseSolver::setMaterials(const std::vector<MaterialSpec>& mater
   dropPreparedTimeStep();  // the criteria read the materials: evaluate them again
   time_step_.markStale();
   table_ = MaterialTable(materials);
-  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  averaging_ =
+      VolumetricAveraging(table_, mesh_, exchange_.get(), ranks_ ? ranks_->comm() : MPI_COMM_NULL);
   air_path_ = AirPath(table_, mesh_.numElements());
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
   element_seepage_ =
@@ -220,7 +221,8 @@ void ExplicitTwoPhaseSolver::distribute(const RankDecomposition& decomposition) 
   dropPreparedTimeStep();
   ranks_ = &decomposition;
   exchange_ = std::make_unique<NodalExchange>(decomposition);
-  averaging_ = VolumetricAveraging(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());
+  averaging_ =
+      VolumetricAveraging(table_, mesh_, exchange_.get(), ranks_ ? ranks_->comm() : MPI_COMM_NULL);
   head_stabilisation_ = LiquidHeadStabilisation(table_, mesh_.numNodes(), exchange_.get());
   element_seepage_ =
       IntraElementSeepage(table_, mesh_.numElements(), mesh_.numNodes(), exchange_.get());

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "argine/parallel/NodalExchange.hpp"
+#include "argine/physics/DistributedStep.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
@@ -74,6 +75,8 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
   const auto node_lo = s.node_lo;
   auto element_sv = KE::create_scatter_view(element_sums);
   auto node_sv = KE::create_scatter_view(node_sums);
+  const auto patch_e = s.patch_e;
+  const bool patches = patch_e.extent(0) > 0;
   Kokkos::parallel_for(
       "averaging_scatter", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -88,8 +91,9 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
           const Real wq = w * value_pc(p, c);
           if (mode == kAverageElement) {
             auto sums = element_sv.access();
-            addToNode<kCompensated>(sums, element_sums, element_lo, e, 2 * c, wq);
-            addToNode<kCompensated>(sums, element_sums, element_lo, e, 2 * c + 1, w);
+            const int row = patches ? patch_e(e) : e;
+            addToNode<kCompensated>(sums, element_sums, element_lo, row, 2 * c, wq);
+            addToNode<kCompensated>(sums, element_sums, element_lo, row, 2 * c + 1, w);
             continue;
           }
           auto sums = node_sv.access();
@@ -117,6 +121,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
   const auto mode_pc = scratch.mode_pc;
   const auto value_pc = scratch.value_pc;
   const int channels = kChannels > 0 ? kChannels : scratch.channels();
+  const auto patch_e = scratch.patch_e;
+  const bool patches = patch_e.extent(0) > 0;
   Kokkos::parallel_for(
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int e = element_p(p);
@@ -127,7 +133,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
           if (mode == kAverageElement) {
-            value_pc(p, c) = element_sums(e, 2 * c) / element_sums(e, 2 * c + 1);
+            const int row = patches ? patch_e(e) : e;
+            value_pc(p, c) = element_sums(row, 2 * c) / element_sums(row, 2 * c + 1);
             continue;
           }
           Real average = 0;
@@ -139,6 +146,35 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
           value_pc(p, c) = average;
         }
       });
+}
+
+/// With patches on several ranks: each patch's sums completed over the ranks (a patch may
+/// hold elements of several ranks), folded where they are compensated.
+void sumPatchesOverRanks(AveragingScratch& scratch) {
+  const auto sums = scratch.element_sums;
+  const int rows = static_cast<int>(sums.extent(0)), columns = static_cast<int>(sums.extent(1));
+  if (!scratch.compensated()) {
+    MPI_Allreduce(MPI_IN_PLACE, sums.data(), rows * columns, MPI_DOUBLE, MPI_SUM,
+                  scratch.patch_comm);
+    return;
+  }
+  // every rank's binned sums merged in rank order: the same bits as one rank's sum
+  std::vector<CompensatedReal> all(static_cast<std::size_t>(rows) * columns);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c) {
+      Real* parts[kSumParts];
+      partsAt(sums, scratch.element_lo, r, c, parts);
+      for (int k = 0; k < kSumParts; ++k) all[r * columns + c].part[k] = *parts[k];
+    }
+  std::vector<Real> buffer;
+  sumCompensatedOverRanks(scratch.patch_comm, all, buffer);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c) {
+      Real* parts[kSumParts];
+      partsAt(sums, scratch.element_lo, r, c, parts);
+      *parts[0] = all[r * columns + c].value();
+      for (int k = 1; k < kSumParts; ++k) *parts[k] = 0;
+    }
 }
 
 }  // namespace
@@ -186,9 +222,13 @@ void sumPointValues(const MaterialPoints& points, const PointShapes& shapes,
       exchange->sumCompensated({nodalField(node_sums)}, lo);
     }
     if (nodal) foldCompensatedSums(active, node_sums, scratch.node_lo);
-    foldCompensatedSums(element_sums, scratch.element_lo);
-  } else if (exchange && nodal) {
-    exchange->sum({nodalField(node_sums)});
+    if (scratch.patch_comm != MPI_COMM_NULL)
+      sumPatchesOverRanks(scratch);  // folds them too
+    else
+      foldCompensatedSums(element_sums, scratch.element_lo);
+  } else {
+    if (exchange && nodal) exchange->sum({nodalField(node_sums)});
+    if (scratch.patch_comm != MPI_COMM_NULL) sumPatchesOverRanks(scratch);
   }
 }
 

@@ -1,10 +1,12 @@
 #include "argine/physics/VolumetricAveraging.hpp"
 
 #include <Kokkos_ScatterView.hpp>
+#include <algorithm>
 #include <cstring>
 #include <type_traits>
 
 #include "argine/core/Lanes.hpp"
+#include "argine/mesh/Mesh.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -26,12 +28,15 @@ static_assert(kNone == kAverageNone && kNodal == kAverageNodal &&
 
 }  // namespace
 
-VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
-                                         NodalExchange* exchange)
+VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh& mesh,
+                                         NodalExchange* exchange, MPI_Comm comm)
     : exchange_(exchange) {
+  const int nodes = mesh.numNodes();
   AveragingUse strain, pressure;
+  Real length = 0;  // one for every material with an element average (checkDeck)
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
+    length = std::max(length, material.locking.averaging_length);
     strain.add(static_cast<int>(material.locking.volumetric_strain));
     pressure.add(material.phase == PhaseModel::Saturated
                      ? static_cast<int>(material.locking.liquid_pressure)
@@ -56,8 +61,15 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, int element
       host(m) = table.host(m).locking.volumetric_strain == IncrementAveraging::Nodal ? 1 : 0;
     Kokkos::deep_copy(nodal_m_, host);
   }
-  if (strain_) increments_.allocateSums(kChannels, strain, elements, nodes);
-  if (pressure_) pressure_increments_.allocateSums(1, pressure, elements, nodes);
+  int element_rows = mesh.numElements();
+  if (length > 0 && (strain.elements || pressure.elements)) {
+    patches_ = buildAveragingPatches(mesh, length);
+    element_rows = patches_.count;
+    increments_.usePatches(patches_.patch_e, comm);
+    pressure_increments_.usePatches(patches_.patch_e, comm);
+  }
+  if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
+  if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,

@@ -266,6 +266,33 @@ TEST(DeckValidation, OneMaterialPerBlock) {
                   "block 'soil' already holds material 'soil'");
 }
 
+TEST(DeckValidation, AveragingLengthNeedsAnElementAverageAndOneLength) {
+  const std::string porosity = "Porosity: 0.4";
+  expectDeckError(replaced(kBaseDeck, porosity,
+                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
+                           "nodal, Averaging Length (m): 0.2}"),
+                  "Materials/soil/Locking Mitigation/Averaging Length (m)",
+                  "applies to element averages");
+  expectDeckError(replaced(kBaseDeck, porosity,
+                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
+                           "element, Averaging Length (m): -0.2}"),
+                  "Materials/soil/Locking Mitigation/Averaging Length (m)", "-0.2");
+  const std::string element_average =
+      "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: element, Averaging "
+      "Length (m): 0.2}";
+  EXPECT_NO_THROW(parseText(replaced(kBaseDeck, porosity, element_average)));
+  // a second material averaging per element with another length (or none) shares the sums
+  const std::string clay =
+      "    clay:\n      Block: clay\n      Porosity: 0.3\n      Solid Density (kg/m3): 2650\n"
+      "      Solid: {Model: linear elastic, Young's Modulus (Pa): 5.0e6, Poisson's Ratio: 0.3}\n"
+      "      Conductivity: {Intrinsic Permeability (m2): 1.0e-12}\n"
+      "      Locking Mitigation: {Liquid Pressure Averaging: element}\n  Stages:";
+  expectDeckError(replaced(replaced(kBaseDeck, porosity, element_average), "  Stages:", clay),
+                  "Materials/clay/Locking Mitigation/Averaging Length (m)",
+                  "must be the same for every material with an element average (0.2 in "
+                  "material 'soil'), got 0");
+}
+
 TEST(DeckValidation, FirstErrorInDeckOrderIsReported) {
   std::string deck = replaced(kBaseDeck, "Porosity: 0.4", "Porosity: 2");
   deck = replaced(deck, "Element Size (m): 0.1", "Element Size: 0.1");

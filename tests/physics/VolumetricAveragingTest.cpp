@@ -113,7 +113,7 @@ void expectSharedWeightKernelsAsGeneric(ElementType type) {
   generic.allocate(points.count);
   setIncrements(fused, points.count);
   setIncrements(generic, points.count);
-  VolumetricAveraging averaging(table, mesh.numElements(), mesh.numNodes());
+  VolumetricAveraging averaging(table, mesh);
   averaging.averageStrainIncrements(table, points, shapes, active, fused);
   expectedIncrements(points, shapes, active, mesh.numNodes(), generic);
 

@@ -53,6 +53,10 @@ struct LockingMitigationSpec {
   bool intra_element_seepage = false;
   /// whose points exchange: one element's (Element) or those sharing a node (Nodal)
   IncrementAveraging seepage_patch = IncrementAveraging::Element;
+  /// L (m): the `element` averages above are taken over square patches of side L that tile
+  /// the mesh (physics/AveragingPatches.hpp), so that their length does not shrink with the
+  /// cells; 0: one element each
+  Real averaging_length = 0;
 };
 
 struct LiquidSpec {

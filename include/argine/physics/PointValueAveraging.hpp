@@ -4,7 +4,7 @@
 /// (VolumetricAveraging) and the liquid head stabilisation (LiquidHeadStabilisation) share:
 ///
 ///   element  q_p <- sum_{q in e} w_q q_q / sum_{q in e} w_q  over the points of the point's
-///            element e with the same mode;
+///            element e with the same mode (or of its patch of elements, usePatches);
 ///   nodal    q_i = sum_p N_i(x_p) w_p q_p / sum_p N_i(x_p) w_p at the nodes, then
 ///            q_p <- sum_i N_i(x_p) q_i.
 ///
@@ -14,6 +14,8 @@
 /// Several quantities ("channels") that share the weight are averaged in one call: one pass
 /// over the points and, on several MPI ranks, ONE exchange of their node sums (each channel's
 /// sums are the ones a call of its own would form, so the results are the same to the bit).
+
+#include <mpi.h>
 
 #include "argine/core/Types.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
@@ -50,7 +52,14 @@ struct AveragingScratch {
   /// (point, channel): the quantity q_p, replaced by its average.
   Kokkos::View<Real**, Kokkos::LayoutLeft, MemSpace> value_pc;
   /// (element, 2c): sum w q of channel c; (element, 2c + 1): sum w. Empty: nodal only.
+  /// With patches: one row per patch instead of per element.
   Kokkos::View<Real**, MemSpace> element_sums;
+  /// Per element: the patch whose row of element_sums it adds to and reads (usePatches);
+  /// empty: its own row.
+  Kokkos::View<const int*, MemSpace> patch_e;
+  /// With patches on several ranks: the ranks over which a patch's sums are completed (a
+  /// patch may hold elements of several ranks); MPI_COMM_NULL: one rank.
+  MPI_Comm patch_comm = MPI_COMM_NULL;
   /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w. After averagePointValues
   /// (node, 2c) holds the node's average, the quotient of the two, at the active nodes.
   Kokkos::View<Real**, MemSpace> node_sums;
@@ -65,6 +74,13 @@ struct AveragingScratch {
   /// zeroed at every call, and node sums are zeroed, exchanged and divided).
   void allocateSums(int channels, const AveragingUse& use, int elements, int nodes) {
     allocateSums(channels, use.elements ? elements : 0, use.nodes ? nodes : 0);
+  }
+  /// Element averages over patches of elements: `patch_e` maps each element to one of
+  /// `patches` rows of the element sums (allocateSums sizes them by `patches` afterwards);
+  /// on several ranks `comm` completes their sums. Call before allocateSums.
+  void usePatches(Kokkos::View<const int*, MemSpace> patch_of_element, MPI_Comm comm) {
+    patch_e = patch_of_element;
+    patch_comm = comm;
   }
   /// The per-point views for `points` points (kept when the count is unchanged).
   void fitPoints(int points);

@@ -26,6 +26,7 @@
 /// order in d p_L / K_L.
 
 #include "argine/core/Types.hpp"
+#include "argine/physics/AveragingPatches.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
 
 namespace argine {
@@ -34,18 +35,20 @@ class ActiveNodes;
 class MaterialTable;
 class NodalExchange;
 struct MaterialPoints;
+struct Mesh;
 struct PointRates;
 struct PointShapes;
 
 class VolumetricAveraging {
  public:
   VolumetricAveraging() = default;
-  /// Scratch for a mesh of `elements` elements and `nodes` nodes, allocated only when a
-  /// material of `table` asks for an averaging. On several MPI ranks, `exchange` completes
-  /// the nodal sums at the nodes shared with other ranks (an element, and so its element
-  /// sums, belongs to one rank only).
-  VolumetricAveraging(const MaterialTable& table, int elements, int nodes,
-                      NodalExchange* exchange = nullptr);
+  /// Scratch for `mesh`, allocated only when a material of `table` asks for an averaging,
+  /// with the patches of its `Averaging Length (m)` (AveragingPatches.hpp) if one gives it.
+  /// On several MPI ranks, `exchange` completes the nodal sums at the nodes shared with other
+  /// ranks and `comm` the sums of patches (an element, and so its own element sums, belongs
+  /// to one rank only; a patch may not).
+  VolumetricAveraging(const MaterialTable& table, const Mesh& mesh,
+                      NodalExchange* exchange = nullptr, MPI_Comm comm = MPI_COMM_NULL);
 
   /// Whether any material averages the volumetric strain / the liquid pressure increment.
   bool averagesStrain() const { return strain_; }
@@ -88,6 +91,7 @@ class VolumetricAveraging {
   Kokkos::View<Real * [kChannels + 1], MemSpace> nodal_sums_;
   Kokkos::View<int*, MemSpace> nodal_m_;  ///< all_nodal_: per material, 1 where it averages
   bool pressure_ = false;
+  AveragingPatches patches_;                    ///< empty: element averages per element
   NodalExchange* exchange_ = nullptr;           ///< several ranks: completes the node sums
   AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
   AveragingScratch pressure_increments_;        ///< d p_L (one channel)
