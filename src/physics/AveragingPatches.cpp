@@ -34,7 +34,6 @@ AveragingPatches buildAveragingPatches(const Mesh& mesh, Real length) {
     number.emplace(cell[e], 0);
   }
   AveragingPatches patches;
-  patches.length = length;
   for (auto& entry : number) entry.second = patches.count++;
   patches.patch_e = Kokkos::View<int*, MemSpace>("averaging_patch_e", elements);
   const auto patch_e = Kokkos::create_mirror_view(patches.patch_e);

@@ -159,15 +159,15 @@ void sumPatchesOverRanks(AveragingScratch& scratch) {
     return;
   }
   // every rank's binned sums merged in rank order: the same bits as one rank's sum
-  std::vector<CompensatedReal> all(static_cast<std::size_t>(rows) * columns);
+  std::vector<CompensatedReal>& all = scratch.patch_parts;
+  all.resize(static_cast<std::size_t>(rows) * columns);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < columns; ++c) {
       Real* parts[kSumParts];
       partsAt(sums, scratch.element_lo, r, c, parts);
       for (int k = 0; k < kSumParts; ++k) all[r * columns + c].part[k] = *parts[k];
     }
-  std::vector<Real> buffer;
-  sumCompensatedOverRanks(scratch.patch_comm, all, buffer);
+  sumCompensatedOverRanks(scratch.patch_comm, all, scratch.patch_buffer);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < columns; ++c) {
       Real* parts[kSumParts];

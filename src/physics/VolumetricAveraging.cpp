@@ -8,6 +8,7 @@
 #include "argine/core/Lanes.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/parallel/NodalExchange.hpp"
+#include "argine/physics/AveragingPatches.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
@@ -63,10 +64,11 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
   }
   int element_rows = mesh.numElements();
   if (length > 0 && (strain.elements || pressure.elements)) {
-    patches_ = buildAveragingPatches(mesh, length);
-    element_rows = patches_.count;
-    increments_.usePatches(patches_.patch_e, comm);
-    pressure_increments_.usePatches(patches_.patch_e, comm);
+    // (the scratches' views keep the map alive)
+    const AveragingPatches patches = buildAveragingPatches(mesh, length);
+    element_rows = patches.count;
+    increments_.usePatches(patches.patch_e, comm);
+    pressure_increments_.usePatches(patches.patch_e, comm);
   }
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);

@@ -19,11 +19,9 @@ struct Mesh;
 
 struct AveragingPatches {
   /// Per element: its patch, 0 .. count - 1 (numbered along x, then y, over the patches
-  /// that hold an element). Empty: no patches (one element each).
+  /// that hold an element).
   Kokkos::View<int*, MemSpace> patch_e;
   int count = 0;
-  Real length = 0;  ///< L (m); 0: no patches
-  bool empty() const { return count == 0; }
 };
 
 /// The patches of side `length` (> 0) over `mesh`'s elements.

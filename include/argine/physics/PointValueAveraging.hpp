@@ -17,6 +17,8 @@
 
 #include <mpi.h>
 
+#include <vector>
+
 #include "argine/core/Types.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
 
@@ -60,6 +62,10 @@ struct AveragingScratch {
   /// With patches on several ranks: the ranks over which a patch's sums are completed (a
   /// patch may hold elements of several ranks); MPI_COMM_NULL: one rank.
   MPI_Comm patch_comm = MPI_COMM_NULL;
+  /// Reproducible sums over the ranks: the patches' sums as values and the reduction's
+  /// buffer, kept so that no step allocates them.
+  std::vector<CompensatedReal> patch_parts;
+  std::vector<Real> patch_buffer;
   /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w. After averagePointValues
   /// (node, 2c) holds the node's average, the quotient of the two, at the active nodes.
   Kokkos::View<Real**, MemSpace> node_sums;

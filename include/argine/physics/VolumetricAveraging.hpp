@@ -26,7 +26,6 @@
 /// order in d p_L / K_L.
 
 #include "argine/core/Types.hpp"
-#include "argine/physics/AveragingPatches.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
 
 namespace argine {
@@ -91,7 +90,6 @@ class VolumetricAveraging {
   Kokkos::View<Real * [kChannels + 1], MemSpace> nodal_sums_;
   Kokkos::View<int*, MemSpace> nodal_m_;  ///< all_nodal_: per material, 1 where it averages
   bool pressure_ = false;
-  AveragingPatches patches_;                    ///< empty: element averages per element
   NodalExchange* exchange_ = nullptr;           ///< several ranks: completes the node sums
   AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
   AveragingScratch pressure_increments_;        ///< d p_L (one channel)
