@@ -26,6 +26,8 @@ and, as diagnostics of the moving mass's water (one table per time, not charted)
 
   volume gain        the summed change of volume since the start of the points that moved
                      > 10 cm (L per m); with dilatancy angle 0 nearly nil in a converged slide
+  of it near the surface  the part of that gain in points now within 0.2 m below the
+                     body's surface (the highest point of each 0.1 m wide column; L per m)
   gain per cell      the mean over those points of their volumetric strain since the start
                      divided by the cells they crossed, |u - u_start| / H (1e-3): a constant
                      here means the gain is made a little at each cell crossed, and so grows as
@@ -55,8 +57,11 @@ import numpy as np
 
 CREST_Y, TOE_X = 3.0, 6.0  # the levee_drawdown / levee_rainfall geometry (m)
 MOVED = 0.10  # a point has "moved" beyond this displacement (m)
+NEAR_SURFACE = 0.2  # a point lies "near the surface" within this depth below it (m)
+SURFACE_BIN = 0.1  # the surface: the highest point of each column of this width (m)
 QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
-WATER = ("volume gain (L/m)", "gain per cell (1e-3)", "water drawn (L/m)", "made inside (L/m)",
+WATER = ("volume gain (L/m)", "of it near the surface (L/m)", "gain per cell (1e-3)",
+         "water drawn (L/m)", "made inside (L/m)",
          "mass p_L (kPa)")
 PROBES = ("MP1_crest", "MP2_slope", "MP3_toe")  # the scenes' probes (deck Probes/Points)
 
@@ -114,17 +119,29 @@ def measure(x0, y0, ux, uy, volume):
     return out
 
 
-def water_of_moving_mass(h, x0, ux, uy, volume, p_liquid, k0, k):
+def depth_below_surface(x, y):
+    """Each point's depth below the body's surface above it: the highest point of its column
+    of width SURFACE_BIN, minus its own y (m)."""
+    column = np.floor(x / SURFACE_BIN).astype(int)
+    column -= column.min()
+    top = np.full(column.max() + 1, -np.inf)
+    np.maximum.at(top, column, y)
+    return top[column] - y
+
+
+def water_of_moving_mass(h, x0, y0, ux, uy, volume, p_liquid, k0, k):
     """The moving mass's water diagnostics (module docstring) at output k against the start
-    output k0: point displacements ux, uy and volumes per output, p_liquid (None if the run
-    has no liquid)."""
+    output k0: initial positions x0, y0, point displacements ux, uy and volumes per output,
+    p_liquid (None if the run has no liquid)."""
     moved = np.hypot(ux[k], uy[k]) > MOVED
     if moved.sum() == 0:
         return {}
     gain = volume[k][moved] - volume[k0][moved]
+    near = depth_below_surface(x0 + ux[k], y0 + uy[k])[moved] < NEAR_SURFACE
     cells = np.hypot(ux[k][moved] - ux[k0][moved], uy[k][moved] - uy[k0][moved]) / h
     crossed = cells > 1.0  # a point still in its first cell says nothing per cell
-    out = {"volume gain (L/m)": 1e3 * float(gain.sum())}
+    out = {"volume gain (L/m)": 1e3 * float(gain.sum()),
+           "of it near the surface (L/m)": 1e3 * float(gain[near].sum())}
     if crossed.any():
         out["gain per cell (1e-3)"] = 1e3 * float(
             np.mean(gain[crossed] / volume[k0][moved][crossed] / cells[crossed]))
@@ -201,7 +218,7 @@ def main():
             if abs(time[k] - (args.start + t)) > 1e-6:
                 continue  # this run did not reach t
             rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
-            water[t] = water_of_moving_mass(float(h), x0, v["displ_x"], v["displ_y"],
+            water[t] = water_of_moving_mass(float(h), x0, y0, v["displ_x"], v["displ_y"],
                                             v["volume"], v.get("pressure_liquid"), k0, k)
             water[t].update(drawn.get(args.start + t, {}))
         probes = probe_displacements(directory, name, [args.start + t for t in rows])

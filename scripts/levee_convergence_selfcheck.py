@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Self-check of levee_convergence.py's observed order and error bar (CTest
 scripts.levee_convergence_selfcheck, < 1 s) on sequences whose order and limit are known by
-hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m)."""
+hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m); and its
+depth below the surface on five points."""
 import math
 import os
 import sys
@@ -61,6 +62,16 @@ order, limit, bar = lc.error_bar([1.0, 1.5, 1.4], sizes)
 check("oscillating: error bar", bar, 1.25 * 0.5, 1e-12)
 if not (math.isnan(order) and math.isnan(limit)):
     failures.append("oscillating: order and limit should be nan")
+
+# Depth below the surface: the highest point of each 0.1 m column. Columns [0, 0.1) with
+# y = 1.0, 0.7 and [0.1, 0.2) with y = 0.4, 0.45, 0.1 (x = 0.15 lies in the second):
+# depths 0, 0.3 | 0.05, 0, 0.35.
+import numpy as np  # noqa: E402
+
+depth = lc.depth_below_surface(np.array([0.02, 0.08, 0.12, 0.15, 0.19]),
+                               np.array([1.0, 0.7, 0.4, 0.45, 0.1]))
+for got, expected, what in zip(depth, [0.0, 0.3, 0.05, 0.0, 0.35], "abcde"):
+    check(f"depth below the surface, point {what}", got, expected, 1e-12)
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
