@@ -87,6 +87,7 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
     conditions_.push_back(std::move(condition));
   }
   atmosphere_ = stage.atmosphere_on_free_surfaces;
+  if (stage.hydraulic_heads_through_soil) checkHeadThroughSoil(stage);
   sides_used_.resize(conditions_.size());
   current_values_.assign(conditions_.size(), 0.0);
   current_end_values_.assign(conditions_.size(), 0.0);
@@ -101,7 +102,63 @@ std::array<Real, 2> valuesAt(const HydraulicCondition& condition, Real time) {
   return {value, condition.linear_in_x.active ? condition.linear_in_x.end.at(time) : value};
 }
 
+/// The nodal loads of `forces` (node -> liquid components, then mixture) into `loads`.
+void toDevice(const std::map<int, std::array<Real, 2 * kDim>>& forces, NodalLoads& loads) {
+  const std::size_t n = forces.size();
+  if (loads.count() != static_cast<int>(n)) {
+    loads.node = Kokkos::View<int*, MemSpace>("hydraulic_load_node", n);
+    loads.mixture = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_mixture", n);
+    loads.liquid = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_liquid", n);
+  }
+  auto node = Kokkos::create_mirror_view(loads.node);
+  auto mixture = Kokkos::create_mirror_view(loads.mixture);
+  auto liquid = Kokkos::create_mirror_view(loads.liquid);
+  std::size_t j = 0;
+  for (const auto& [i, f] : forces) {
+    node(j) = i;
+    for (int d = 0; d < kDim; ++d) {
+      liquid(j, d) = f[d];
+      mixture(j, d) = f[kDim + d];
+    }
+    ++j;
+  }
+  Kokkos::deep_copy(loads.node, node);
+  Kokkos::deep_copy(loads.mixture, mixture);
+  Kokkos::deep_copy(loads.liquid, liquid);
+}
+
 }  // namespace
+
+void HydraulicConditions::checkHeadThroughSoil(const StageSpec& stage) {
+  // The field must be one, and continuous: a jump inside the soil would load it there.
+  const std::string where = "Stages/" + stage.name + "/Hydraulic Loads";
+  std::vector<std::size_t> heads;
+  for (std::size_t c = 0; c < conditions_.size(); ++c)
+    if (conditions_[c].kind == BoundaryKind::TotalHead) heads.push_back(c);
+  if (heads.size() != 1)
+    throw InputError(where,
+                     "'through the soil' applies one total head condition's pressure "
+                     "over the soil; the stage has " +
+                         std::to_string(heads.size()) + " (use 'at boundary points' for several)");
+  const HydraulicCondition& head = conditions_[heads[0]];
+  if (head.above == AboveLevel::ConstantPressure && head.pressure_above != 0)
+    throw InputError(
+        "Stages/" + stage.name + "/Boundary Conditions/" + head.name + "/Pressure Above Level (Pa)",
+        "with 'Hydraulic Loads: through the soil' the pressure above the level "
+        "must be 0 (or use Above Level: seepage face or linear suction): a "
+        "pressure that jumps at the level would load the soil inside");
+  heads_through_soil_ = true;
+  through_soil_head_ = heads[0];
+}
+
+HeadPressureField HydraulicConditions::headFieldThroughSoil(Real gravity) const {
+  const HydraulicCondition& head = conditions_.at(through_soil_head_);
+  HeadPressureField field;
+  field.rho_g = head.liquid_density * gravity;
+  field.head = current_values_.at(through_soil_head_);
+  field.suction_above = head.above == AboveLevel::LinearSuction;
+  return field;
+}
 
 Real HydraulicConditions::largestCurrentValue(std::size_t condition) const {
   return std::max(current_values_[condition], current_end_values_[condition]);
@@ -140,6 +197,7 @@ bool HydraulicConditions::sealsSide(const std::vector<unsigned char>& rules, con
 void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
   // node -> force on the liquid (full p^) and on the mixture (free water only: p^ > 0)
   std::map<int, std::array<Real, 2 * kDim>> forces;
+  std::map<int, std::array<Real, 2 * kDim>> head_forces;  // through the soil: apart
   struct Claim {
     int kind = 0;
     Real rain = 0;  ///< vertical inflow q (m/s), 0 for a seepage face
@@ -206,11 +264,13 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           break;
       }
       if (fa[0] != 0 || fa[1] != 0 || fb[0] != 0 || fb[1] != 0) {
+        auto& to =
+            heads_through_soil_ && condition.kind == BoundaryKind::TotalHead ? head_forces : forces;
         for (int d = 0; d < kDim; ++d) {
-          forces[side.a][d] += fa[d];
-          forces[side.b][d] += fb[d];
-          forces[side.a][kDim + d] += ma[d];
-          forces[side.b][kDim + d] += mb[d];
+          to[side.a][d] += fa[d];
+          to[side.b][d] += fb[d];
+          to[side.a][kDim + d] += ma[d];
+          to[side.b][kDim + d] += mb[d];
         }
       }
     }
@@ -241,34 +301,9 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     }
   }
 
-  // loads: liquid and mixture
-  std::vector<int> load_node;
-  std::vector<std::array<Real, 2 * kDim>> load_force;
-  for (const auto& [node, f] : forces) {
-    load_node.push_back(node);
-    load_force.push_back(f);
-  }
-  const std::size_t n = load_node.size();
-  if (loads_.count() != static_cast<int>(n)) {
-    loads_.node = Kokkos::View<int*, MemSpace>("hydraulic_load_node", n);
-    loads_.mixture = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_mixture", n);
-    loads_.liquid = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_liquid", n);
-  }
-  {
-    auto node = Kokkos::create_mirror_view(loads_.node);
-    auto mixture = Kokkos::create_mirror_view(loads_.mixture);
-    auto liquid = Kokkos::create_mirror_view(loads_.liquid);
-    for (std::size_t j = 0; j < n; ++j) {
-      node(j) = load_node[j];
-      for (int d = 0; d < kDim; ++d) {
-        liquid(j, d) = load_force[j][d];
-        mixture(j, d) = load_force[j][kDim + d];
-      }
-    }
-    Kokkos::deep_copy(loads_.node, node);
-    Kokkos::deep_copy(loads_.mixture, mixture);
-    Kokkos::deep_copy(loads_.liquid, liquid);
-  }
+  // loads: liquid and mixture (the head's apart when it loads through the soil)
+  toDevice(forces, loads_);
+  toDevice(head_forces, head_loads_);
 
   std::vector<int> c_node, c_kind;
   std::vector<Real> c_q, c_normal, c_length;
@@ -302,6 +337,7 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   }
 
   for (const auto& [node, f] : forces) conditioned.push_back(node);
+  for (const auto& [node, f] : head_forces) conditioned.push_back(node);
   std::sort(conditioned.begin(), conditioned.end());
   conditioned.erase(std::unique(conditioned.begin(), conditioned.end()), conditioned.end());
   toDevice(conditioned, "conditioned_node", conditioned_nodes_);

@@ -789,7 +789,8 @@ ListSchema stageKeys() {
                 .byDefault(std::string("velocity"))
                 .when("Solver", {"explicit", "quasi-static"}));
   stage.add(KeySpec::choice("Hydraulic Loads",
-                            Words{kHydraulicLoadsByMesh, "on free sides", "at boundary points"},
+                            Words{kHydraulicLoadsByMesh, "on free sides", "at boundary points",
+                                  "through the soil"},
                             "where the pressure of total head and pressure series conditions "
                             "loads the soil: on free sides: integrated along the free sides "
                             "and given to their end nodes (the thesis), right where the mesh "
@@ -798,6 +799,13 @@ ListSchema stageKeys() {
                             "at their outer edge, for a surface that cuts through its cells "
                             "(a soil region in a rectangle grid: on free sides put +70 kPa "
                             "on a surface point of the grid levee; doc/theory.md Sec. 5.5); "
+                            "through the soil: the total head's hydrostatic pressure as a "
+                            "field over the soil's points, -sum_p V grad(N_i p^) (Gauss's "
+                            "theorem), so it meets the surface where the points' stresses "
+                            "end (one total-head condition; its level's pressure must be 0 "
+                            "or linear suction above it; free sides below the level outside "
+                            "its zone must be fixed and sealed; other loads at boundary "
+                            "points; doc/theory.md Sec. 5.5, Loads through the soil); "
                             "by mesh: at boundary points on a rectangle with Regions, on free "
                             "sides on every other mesh (whose elements follow the soil's "
                             "outline)")

@@ -456,9 +456,11 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
   spec.fixity_keeps_relative_velocity =
       stage.word("Liquid At Solid Fixities") == "relative velocity";
   const std::string hydraulic_loads = stage.word("Hydraulic Loads");
-  spec.hydraulic_loads_at_points = hydraulic_loads == kHydraulicLoadsByMesh
-                                       ? hydraulicLoadsAtPoints(mesh)
-                                       : hydraulic_loads == "at boundary points";
+  spec.hydraulic_loads_at_points =
+      hydraulic_loads == kHydraulicLoadsByMesh
+          ? hydraulicLoadsAtPoints(mesh)
+          : hydraulic_loads == "at boundary points" || hydraulic_loads == "through the soil";
+  spec.hydraulic_heads_through_soil = hydraulic_loads == "through the soil";
   spec.atmosphere_on_free_surfaces = stage.word("Surfaces Without Condition") == "atmosphere";
   spec.interior_liquid_conservative = stage.word("Interior Liquid Balance") == "conservative";
   spec.free_surface_suction_held = stage.word("Free Surface Liquid Pressure") == "suction held";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -14,6 +15,7 @@
 #include "argine/parallel/RankDecomposition.hpp"
 #include "argine/physics/DistributedStep.hpp"
 #include "argine/physics/FreeSurfaceSuction.hpp"
+#include "argine/physics/HeadLoadsThroughSoil.hpp"
 #include "argine/physics/InteriorLiquidBalance.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/PointBorneLoads.hpp"
@@ -386,7 +388,9 @@ void ExplicitTwoPhaseSolver::applyHydraulicLoads() {
     // loads counted in the directions the solid may move (the river's pressure on a fixed
     // end of the section does no work).
     load_bound_ = std::max(load_bound_, boundaries_.totalLoadMagnitude() +
-                                            freeLoadMagnitude(hydraulic_.loads(), constraints));
+                                            freeLoadMagnitude(hydraulic_.loads(), constraints) +
+                                            freeLoadMagnitude(hydraulic_.headLoads(), constraints));
+    if (hydraulic_.headsThroughSoil()) checkSidesBelowHeadOutsideItsZone();
   }
   boundary_fields_.zero(nodes_in_use_);
   mapBoundaryGradients(points_, shapes_, table_.materials(), table_.liquidCarrying(), grid_,
@@ -411,8 +415,41 @@ void ExplicitTwoPhaseSolver::addHydraulicLoadsToGrid() {
   point_borne_loads_.zero(nodes_in_use_);
   spreadPointBorneLoads(hydraulic_.loads(), points_, shapes_, table_.liquidCarrying(),
                         boundary_fields_, grid_, point_borne_loads_);
+  if (hydraulic_.headsThroughSoil())  // the head's field over the points' volume
+    spreadHeadLoadsThroughSoil(hydraulic_.headFieldThroughSoil(gravity_), points_, shapes_,
+                               table_.liquidCarrying(), point_borne_loads_);
   sumPointBorneLoadsAtSharedNodes(exchange_.get(), nodes_in_use_, point_borne_loads_);
   addPointBorneLoads(point_borne_loads_, nodes_in_use_, grid_);
+}
+
+void ExplicitTwoPhaseSolver::checkSidesBelowHeadOutsideItsZone() const {
+  // The head's field loads every free side below its level (HeadLoadsThroughSoil.hpp); where
+  // the condition does not cover one, the load does no work only if the side is held.
+  const std::size_t head = hydraulic_.throughSoilHead();
+  const Real level = hydraulic_.currentValues()[head];
+  std::set<std::pair<int, int>> covered;
+  for (const FreeSide& side : hydraulic_.sidesUsed()[head])
+    covered.insert({side.element, side.side});
+  const NodalConstraints& constraints = boundaries_.constraints();
+  const std::vector<unsigned char> rules = otherLiquidRules();
+  for (const FreeSide& side : free_boundary_.sides()) {
+    if (std::min(side.xa[1], side.xb[1]) >= level || covered.count({side.element, side.side}))
+      continue;
+    bool held = HydraulicConditions::sealsSide(rules, side);
+    for (int d = 0; d < kDim; ++d)
+      if (side.normal[d] != 0)
+        held = held && (constraints.flagsOf(side.a) & solidFixedBit(d)) &&
+               (constraints.flagsOf(side.b) & solidFixedBit(d));
+    if (held) continue;
+    std::ostringstream out;
+    out << "'through the soil' loads all of the soil below the level of '"
+        << hydraulic_.conditions()[head].name << "' (" << level << " m), but the free side from ("
+        << side.xa[0] << ", " << side.xa[1] << ") to (" << side.xb[0] << ", " << side.xb[1]
+        << ") m at t = " << time_
+        << " s lies below it, outside the condition's zone, and is not fixed and sealed along its "
+           "normal: widen the zone to the wetted surface, or use 'at boundary points'";
+    throw InputError("Stages/" + stage_name_ + "/Hydraulic Loads", out.str());
+  }
 }
 
 void ExplicitTwoPhaseSolver::markConditionedNodes(Kokkos::View<const int*, MemSpace> nodes) {

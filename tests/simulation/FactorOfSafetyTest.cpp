@@ -11,6 +11,7 @@
 
 #include "CsvRows.hpp"
 #include "DrySlopeDeck.hpp"
+#include "QuietRun.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -99,11 +100,7 @@ TEST(FactorOfSafetyDeck, HandOverNeedsTheSectionAndRangesMustIncrease) {
 TEST(FactorOfSafetyRun, EveryOutputAndTheHandOver) {
   const Deck deck = parse(deckText("      Hand Over Below Factor Of Safety: 5.0", true));
   const auto dir = std::filesystem::path(::testing::TempDir()) / "argine_factor_of_safety";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions options;
-  options.output_directory = dir.string();
-  options.quiet = true;
+  const RunOptions options = test::quietRunIn(dir);
   Simulation simulation(deck, options);
   simulation.run();
 

@@ -11,6 +11,7 @@
 
 #include "CsvRows.hpp"
 #include "PointSums.hpp"
+#include "QuietRun.hpp"
 #include "WetColumnDeck.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
@@ -110,11 +111,7 @@ struct ColumnRun {
 
 ColumnRun runColumn(const std::string& text, const std::string& folder) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / folder;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions options;
-  options.output_directory = dir.string();
-  options.quiet = true;
+  const RunOptions options = test::quietRunIn(dir);
   Simulation simulation(parseDeck(*Teuchos::getParametersFromYamlString(text), ""), options);
   simulation.run();
   return {simulation.points(), simulation.stageLog(), dir};

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "QuietRun.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
 
@@ -100,11 +101,7 @@ BankRun runBank(bool intra_element_seepage) {
       parseDeck(*Teuchos::getParametersFromYamlString(bankDeck(intra_element_seepage)), "");
   const auto dir = std::filesystem::path(::testing::TempDir()) /
                    (intra_element_seepage ? "argine_bank_seepage" : "argine_bank_thesis");
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions options;
-  options.output_directory = dir.string();
-  options.quiet = true;
+  const RunOptions options = test::quietRunIn(dir);
   Simulation simulation(deck, options);
   simulation.run();
   BankRun run;

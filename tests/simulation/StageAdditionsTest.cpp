@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "CsvRows.hpp"
+#include "QuietRun.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -121,11 +122,7 @@ const std::string kDeck = R"(argine:
 TEST(SimulationStages, K0StateMaterialChangeProbesAndInitialDiagnostics) {
   const Deck deck = parseDeck(*Teuchos::getParametersFromYamlString(kDeck), "");
   const auto dir = std::filesystem::path(::testing::TempDir()) / "argine_simulation_stages";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions options;
-  options.output_directory = dir.string();
-  options.quiet = true;
+  const RunOptions options = test::quietRunIn(dir);
   Simulation simulation(deck, options);
 
   // K0 state at t = 0: p_L = 9810 (1 - y), sigma'_yy = -(0.6*2700 + 0.4*1000 - 1000) 9.81 (1-y)

@@ -13,6 +13,7 @@
 
 #include "CsvRows.hpp"
 #include "DrySlopeDeck.hpp"
+#include "QuietRun.hpp"
 #include "argine/core/Error.hpp"
 #include "argine/input/DeckReader.hpp"
 #include "argine/simulation/Simulation.hpp"
@@ -209,11 +210,7 @@ TEST(StrengthReductionDeck, NeedsRelaxationAndAFrictionalMaterial) {
 
 TEST(StrengthReductionRun, BracketsTheFactorFollowsTheCircleAndRestoresTheState) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / "argine_strength_reduction";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  RunOptions options;
-  options.output_directory = dir.string();
-  options.quiet = true;
+  const RunOptions options = test::quietRunIn(dir);
   Simulation simulation(
       parse(slopeDeck("      Strength Reduction: {Factor Tolerance: 0.01}", true)), options);
   simulation.run();
@@ -261,9 +258,7 @@ TEST(StrengthReductionRun, BracketsTheFactorFollowsTheCircleAndRestoresTheState)
   // The state afterwards is the state before: a run without the stage ends with the same
   // points, bit for bit.
   const auto dir2 = dir / "without";
-  std::filesystem::create_directories(dir2);
-  options.output_directory = dir2.string();
-  Simulation reference(parse(slopeDeck("", false)), options);
+  Simulation reference(parse(slopeDeck("", false)), test::quietRunIn(dir2));
   reference.run();
   const MaterialPoints& p = simulation.points();
   const MaterialPoints& q = reference.points();

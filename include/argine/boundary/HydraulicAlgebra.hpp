@@ -35,6 +35,28 @@ KOKKOS_INLINE_FUNCTION Real mixtureLoadPressure(Real prescribed_pressure) {
   return prescribed_pressure > 0 ? prescribed_pressure : Real(0);
 }
 
+/// A total head's pressure as a field over the soil (`Hydraulic Loads: through the soil`,
+/// physics/HeadLoadsThroughSoil.hpp): the liquid's p^(y) = pressureOfHead below the level and,
+/// above it, 0 (seepage face, or a constant pressure of 0) or the same line continued
+/// (linear suction); the mixture's is mixtureLoadPressure of it. Both are continuous in y, so
+/// their gradients hold no jump a volume integral would miss.
+struct HeadPressureField {
+  Real rho_g = 0;              ///< rho_L g (Pa/m)
+  Real head = 0;               ///< H (m)
+  bool suction_above = false;  ///< linear suction above the level, else 0 there
+  /// The liquid's p^ (Pa) and dp^/dy (Pa/m) at height y.
+  KOKKOS_INLINE_FUNCTION void liquid(Real y, Real& p, Real& dp_dy) const {
+    const bool loaded = y < head || suction_above;
+    p = loaded ? pressureOfHead(rho_g, head, y) : Real(0);
+    dp_dy = loaded ? -rho_g : Real(0);
+  }
+  /// The mixture's mixtureLoadPressure(p^) (Pa) and its derivative in y (Pa/m).
+  KOKKOS_INLINE_FUNCTION void mixture(Real y, Real& p, Real& dp_dy) const {
+    p = y < head ? mixtureLoadPressure(pressureOfHead(rho_g, head, y)) : Real(0);
+    dp_dy = y < head ? -rho_g : Real(0);
+  }
+};
+
 /// Adds to fa, fb (N per m thickness) the nodal forces of a pressure varying linearly from
 /// q0 at s0 to q1 at s1 (0 <= s0 <= s1 <= 1 along the side a->b of length L, outward normal
 /// n): f_a += -n L int_{s0}^{s1} (1 - s) p ds, f_b += -n L int s p ds. Simpson's rule, exact

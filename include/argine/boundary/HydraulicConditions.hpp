@@ -124,6 +124,15 @@ class HydraulicConditions {
   void plan(Real time, Real gravity, const FreeBoundary& boundary);
 
   const NodalLoads& loads() const { return loads_; }
+  /// `Hydraulic Loads: through the soil` (StageSpec::hydraulic_heads_through_soil): whether
+  /// the total head loads the soil as a field over its points, not through loads().
+  bool headsThroughSoil() const { return heads_through_soil_; }
+  /// ... the index of that condition, its loads as the free sides would carry them (not
+  /// applied: for the energy scale's load bound and the check of the sides it does not
+  /// cover), and its pressure field at the last plan's time (`gravity` in m/s^2).
+  std::size_t throughSoilHead() const { return through_soil_head_; }
+  const NodalLoads& headLoads() const { return head_loads_; }
+  HeadPressureField headFieldThroughSoil(Real gravity) const;
   const FluxCorrectionList& corrections() const { return corrections_; }
   const NodeOwnership& ownership() const { return ownership_; }
   /// The nodes the conditions load or correct, the atmosphere's excepted (the strain kernel's
@@ -145,9 +154,15 @@ class HydraulicConditions {
   std::vector<FreeSide> sidesOf(const HydraulicCondition& condition,
                                 const FreeBoundary& boundary) const;
 
+  /// InputError unless the stage has one total head, continuous at its level.
+  void checkHeadThroughSoil(const StageSpec& stage);
+
   std::vector<HydraulicCondition> conditions_;
   bool atmosphere_ = false;
-  std::vector<unsigned char> rules_;                ///< LiquidRuleBits per mesh node; empty: none
+  bool heads_through_soil_ = false;
+  std::size_t through_soil_head_ = 0;
+  NodalLoads head_loads_;             ///< through the soil: the head's side loads, not applied
+  std::vector<unsigned char> rules_;  ///< LiquidRuleBits per mesh node; empty: none
   Kokkos::View<int*, MemSpace> conditioned_nodes_;  ///< corrected by a condition, or loaded
   NodalLoads loads_;
   FluxCorrectionList corrections_;

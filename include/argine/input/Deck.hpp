@@ -314,6 +314,10 @@ struct StageSpec {
   /// carry those nodes (physics/PointBorneLoads.hpp); `by mesh` (the default): true on a
   /// rectangle with Regions, false on meshes that follow the soil's outline.
   bool hydraulic_loads_at_points = false;
+  /// `Hydraulic Loads: through the soil`: the total-head condition's hydrostatic pressure
+  /// field loads the soil through its points' volume (physics/HeadLoadsThroughSoil.hpp); its
+  /// other loads (pressure series) go at boundary points (hydraulic_loads_at_points is true).
+  bool hydraulic_heads_through_soil = false;
   /// `Surfaces Without Condition`: `atmosphere` (true, the default) gives every free side
   /// under no hydraulic condition the rule of a seepage face (it drains at p_L >= 0 and lets
   /// no liquid in at suction: the air has no water to give); `open` (false, the thesis)

@@ -266,6 +266,9 @@ class ExplicitTwoPhaseSolver {
   /// The planned loads into f^ext and f_L^ext: at their nodes, or through the points
   /// (`Hydraulic Loads`, PointBorneLoads.hpp).
   void addHydraulicLoadsToGrid();
+  /// `Hydraulic Loads: through the soil`: InputError at a free side below the head's level
+  /// that its condition does not cover and that is not fixed and sealed along its normal.
+  void checkSidesBelowHeadOutsideItsZone() const;
   void detectFreeBoundary();
   bool hydraulicPlanIsCurrent() const;
   void solveLiquidMomentum(Real dt);
