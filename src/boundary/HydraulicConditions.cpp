@@ -87,7 +87,11 @@ HydraulicConditions::HydraulicConditions(const Mesh& mesh, const StageSpec& stag
     conditions_.push_back(std::move(condition));
   }
   atmosphere_ = stage.atmosphere_on_free_surfaces;
-  if (stage.hydraulic_heads_through_soil) checkHeadThroughSoil(stage);
+  if (headThroughSoil(stage) >= 0) {  // checked: one total head, continuous at its level
+    heads_through_soil_ = true;
+    for (std::size_t c = 0; c < conditions_.size(); ++c)
+      if (conditions_[c].kind == BoundaryKind::TotalHead) through_soil_head_ = c;
+  }
   sides_used_.resize(conditions_.size());
   current_values_.assign(conditions_.size(), 0.0);
   current_end_values_.assign(conditions_.size(), 0.0);
@@ -128,28 +132,6 @@ void toDevice(const std::map<int, std::array<Real, 2 * kDim>>& forces, NodalLoad
 }
 
 }  // namespace
-
-void HydraulicConditions::checkHeadThroughSoil(const StageSpec& stage) {
-  // The field must be one, and continuous: a jump inside the soil would load it there.
-  const std::string where = "Stages/" + stage.name + "/Hydraulic Loads";
-  std::vector<std::size_t> heads;
-  for (std::size_t c = 0; c < conditions_.size(); ++c)
-    if (conditions_[c].kind == BoundaryKind::TotalHead) heads.push_back(c);
-  if (heads.size() != 1)
-    throw InputError(where,
-                     "'through the soil' applies one total head condition's pressure "
-                     "over the soil; the stage has " +
-                         std::to_string(heads.size()) + " (use 'at boundary points' for several)");
-  const HydraulicCondition& head = conditions_[heads[0]];
-  if (head.above == AboveLevel::ConstantPressure && head.pressure_above != 0)
-    throw InputError(
-        "Stages/" + stage.name + "/Boundary Conditions/" + head.name + "/Pressure Above Level (Pa)",
-        "with 'Hydraulic Loads: through the soil' the pressure above the level "
-        "must be 0 (or use Above Level: seepage face or linear suction): a "
-        "pressure that jumps at the level would load the soil inside");
-  heads_through_soil_ = true;
-  through_soil_head_ = heads[0];
-}
 
 HeadPressureField HydraulicConditions::headFieldThroughSoil(Real gravity) const {
   const HydraulicCondition& head = conditions_.at(through_soil_head_);

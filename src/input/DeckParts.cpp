@@ -534,6 +534,7 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
                      "stage's implicit rest)");
   parseFactorOfSafetyHandOver(stage, spec);  // issue P13
   parseStrengthReduction(stage, spec);       // issue P13
+  headThroughSoil(spec);                     // refused here, before any stage runs
   return spec;
 }
 
@@ -548,3 +549,27 @@ OutputSpec parseOutput(const DeckSection& output) {
 }
 
 }  // namespace argine::input_detail
+
+namespace argine {
+
+int headThroughSoil(const StageSpec& stage) {
+  if (!stage.hydraulic_heads_through_soil) return -1;
+  std::vector<int> heads;
+  for (std::size_t c = 0; c < stage.boundaries.size(); ++c)
+    if (stage.boundaries[c].kind == BoundaryKind::TotalHead) heads.push_back(static_cast<int>(c));
+  if (heads.size() != 1)
+    throw InputError("Stages/" + stage.name + "/Hydraulic Loads",
+                     "'through the soil' applies one total head condition's pressure over the "
+                     "soil; the stage has " +
+                         std::to_string(heads.size()) + " (use 'at boundary points' for several)");
+  const BoundarySpec& head = stage.boundaries[heads[0]];
+  if (head.hydraulic.above == AboveLevel::ConstantPressure && head.hydraulic.pressure_above != 0)
+    throw InputError(
+        "Stages/" + stage.name + "/Boundary Conditions/" + head.name + "/Pressure Above Level (Pa)",
+        "with 'Hydraulic Loads: through the soil' the pressure above the level "
+        "must be 0 (or use Above Level: seepage face or linear suction): a "
+        "pressure that jumps at the level would load the soil inside");
+  return heads[0];
+}
+
+}  // namespace argine

@@ -131,6 +131,30 @@ TEST(DeckValidation, ImplicitDragNeedsTheUndrainedAndADiffusionCriterion) {
   EXPECT_FALSE(parseText(kBaseDeck).stages[0].implicit_drag);  // the thesis' explicit drag
 }
 
+TEST(DeckValidation, HeadThroughTheSoilNeedsOneContinuousTotalHead) {
+  // `Hydraulic Loads: through the soil` spreads one head's field over the soil
+  // (physics/HeadLoadsThroughSoil.hpp): refused at parse time, before any stage runs.
+  const std::string soil = "Duration (s): 0.1\n      Hydraulic Loads: through the soil";
+  const std::string base = "        base: {Type: solid fixity, Node Set: bottom, Direction: both}";
+  const std::string river =
+      "\n        river: {Type: total head, Zone: {Type: everywhere}, Total Head (m): 2.0";
+  expectDeckError(replaced(kBaseDeck, "Duration (s): 0.1", soil), "Stages/load/Hydraulic Loads",
+                  "'through the soil' applies one total head condition's pressure over the soil; "
+                  "the stage has 0");
+  const std::string two = replaced(replaced(kBaseDeck, "Duration (s): 0.1", soil), base,
+                                   base + river + "}" + replaced(river, "river", "lake") + "}");
+  expectDeckError(two, "Stages/load/Hydraulic Loads", "the stage has 2");
+  const std::string jump = replaced(replaced(kBaseDeck, "Duration (s): 0.1", soil), base,
+                                    base + river + ", Pressure Above Level (Pa): -500}");
+  expectDeckError(jump, "Stages/load/Boundary Conditions/river/Pressure Above Level (Pa)",
+                  "the pressure above the level must be 0");
+  const Deck one = parseText(replaced(replaced(kBaseDeck, "Duration (s): 0.1", soil), base,
+                                      base + river + ", Above Level: seepage face}"));
+  EXPECT_TRUE(one.stages[0].hydraulic_heads_through_soil);
+  EXPECT_TRUE(one.stages[0].hydraulic_loads_at_points);  // other loads at boundary points
+  EXPECT_EQ(headThroughSoil(one.stages[0]), 1);          // after the fixity
+}
+
 TEST(DeckValidation, MissingFileIsReportedWithTheResolvedPath) {
   const auto directory = testDirectory();
   const std::string deck = replaced(kBaseDeck,

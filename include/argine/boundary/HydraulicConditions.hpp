@@ -154,9 +154,6 @@ class HydraulicConditions {
   std::vector<FreeSide> sidesOf(const HydraulicCondition& condition,
                                 const FreeBoundary& boundary) const;
 
-  /// InputError unless the stage has one total head, continuous at its level.
-  void checkHeadThroughSoil(const StageSpec& stage);
-
   std::vector<HydraulicCondition> conditions_;
   bool atmosphere_ = false;
   bool heads_through_soil_ = false;

@@ -345,6 +345,12 @@ struct StageSpec {
   StrengthReductionSpec strength_reduction;  ///< (P13) enabled: a strength-reduction analysis
 };
 
+/// `Hydraulic Loads: through the soil` (StageSpec::hydraulic_heads_through_soil): the index in
+/// `stage.boundaries` of its one total head; InputError unless the stage has exactly one and
+/// its pressure is continuous at its level (a jump would load the soil inside). -1 when the
+/// stage does not load through the soil.
+int headThroughSoil(const StageSpec& stage);
+
 // ---------------------------------------------------------------- initialisation (P4)
 
 /// How the points' initial stress and liquid pressure are set before the first stage.
