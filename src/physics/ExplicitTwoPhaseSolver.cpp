@@ -154,6 +154,8 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   if (!carries_liquid_ || stage.hold_liquid_pressure) hydraulic_.dropAtmosphere();
   if (hydraulic_.atmosphere()) hydraulic_.setOtherLiquidRules(otherLiquidRules());
   liquid_rules_ = interior_liquid_conservative_ ? otherLiquidRules() : std::vector<unsigned char>();
+  head_side_rules_ =
+      hydraulic_.headsThroughSoil() ? otherLiquidRules() : std::vector<unsigned char>();
   boundary_flux_volumes_.assign(hydraulic_.conditions().size() + 2, 0.0);
   free_boundary_stale_ = true;
   hydraulic_plan_current_ = false;
@@ -431,11 +433,10 @@ void ExplicitTwoPhaseSolver::checkSidesBelowHeadOutsideItsZone() const {
   for (const FreeSide& side : hydraulic_.sidesUsed()[head])
     covered.insert({side.element, side.side});
   const NodalConstraints& constraints = boundaries_.constraints();
-  const std::vector<unsigned char> rules = otherLiquidRules();
   for (const FreeSide& side : free_boundary_.sides()) {
     if (std::min(side.xa[1], side.xb[1]) >= level || covered.count({side.element, side.side}))
       continue;
-    bool held = HydraulicConditions::sealsSide(rules, side);
+    bool held = HydraulicConditions::sealsSide(head_side_rules_, side);
     for (int d = 0; d < kDim; ++d)
       if (side.normal[d] != 0)
         held = held && (constraints.flagsOf(side.a) & solidFixedBit(d)) &&

@@ -355,6 +355,9 @@ class ExplicitTwoPhaseSolver {
   Kokkos::View<Real*, MemSpace> liquid_made_inside_i_;
   /// otherLiquidRules() of the stage when it closes nodes (which free sides are sealed).
   std::vector<unsigned char> liquid_rules_;
+  /// otherLiquidRules() of a stage whose head loads through the soil (the sealed sides its
+  /// check accepts), made once a stage, not at every plan.
+  std::vector<unsigned char> head_side_rules_;
   bool returnsLiquidMadeInside() const {
     return interior_liquid_conservative_ && !momentum_.liquid_with_solid;
   }
