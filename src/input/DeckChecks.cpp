@@ -109,9 +109,10 @@ void checkMeshSpec(const MeshSpec& mesh) {
 
 namespace {
 
-/// Averaging Length (m): an element average (of either increment) to apply it to, and one
-/// length for every material with an element average (they share the patches' sums).
-void checkAveragingLength(const Deck& deck) {
+/// Averaging Length (m) and Checkerboard Filter: an element average (of either increment) to
+/// apply them to, and one length and one filter choice for every material with an element
+/// average (they share the patches' sums and their neighbours).
+void checkElementAveraging(const Deck& deck) {
   const MaterialSpec* first = nullptr;  // the first material with an element average
   for (const MaterialSpec& material : deck.materials) {
     const LockingMitigationSpec& locking = material.locking;
@@ -123,9 +124,18 @@ void checkAveragingLength(const Deck& deck) {
       throw InputError(key,
                        "applies to element averages: needs Volumetric Strain Averaging or "
                        "Liquid Pressure Averaging: element");
+    if (locking.checkerboard_filter && !element)
+      throw InputError("Materials/" + material.name + "/Locking Mitigation/Checkerboard Filter",
+                       "applies to element averages: needs Volumetric Strain Averaging or "
+                       "Liquid Pressure Averaging: element");
     if (!element) continue;
     if (first == nullptr) {
       first = &material;
+    } else if (locking.checkerboard_filter != first->locking.checkerboard_filter) {
+      throw InputError("Materials/" + material.name + "/Locking Mitigation/Checkerboard Filter",
+                       "must be the same for every material with an element average (material '" +
+                           first->name + "' has " +
+                           (first->locking.checkerboard_filter ? "true" : "false") + ")");
     } else if (locking.averaging_length != first->locking.averaging_length) {
       throw InputError(key, "must be the same for every material with an element average (" +
                                 formatReal(first->locking.averaging_length) + " in material '" +
@@ -156,7 +166,7 @@ void checkDeck(const Deck& deck) {
                            "), got " + degrees(solid.dilatancy_angle));
   }
 
-  checkAveragingLength(deck);
+  checkElementAveraging(deck);
   input_detail::checkStageAdditions(deck);     // issue P4
   input_detail::checkFactorOfSafety(deck);     // issue P13
   input_detail::checkStrengthReduction(deck);  // issue P13

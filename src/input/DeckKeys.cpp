@@ -264,6 +264,20 @@ ListSchema lockingMitigationKeys() {
                             "size is L gives the same patches)")
                   .atLeast(0)
                   .byDefault(0.0));
+  locking.add(KeySpec::boolean(
+                  "Checkerboard Filter",
+                  "the element averages of Volumetric Strain Averaging (and of "
+                  "Liquid Pressure Averaging) filtered each step: an element's (or "
+                  "patch's) average becomes half its own plus, from each edge "
+                  "neighbour, 1/(2 n) of the neighbour's, n the most edge "
+                  "neighbours an element has (4 on a grid of cells), with the "
+                  "sums redistributed so that sum V q is kept. One value a cell "
+                  "leaves the alternating (checkerboard) pattern of the cells' "
+                  "mean stress free of any nodal force, and a sliding body grows "
+                  "it; the filter removes that mode and smooths the rest over one "
+                  "cell (doc/theory.md Sec. 3.3.4); on several MPI ranks each element's sums are "
+                  "completed over the ranks; false: off")
+                  .byDefault(false));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
                             "alpha: each step a point exchanges liquid at alpha k/g (capped for "
                             "stability) with planes of the piezometric pressure p_L + rho_L g y "

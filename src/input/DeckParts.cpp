@@ -379,6 +379,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
   spec.intra_element_seepage = locking.boolean("Intra-Element Seepage");
   spec.seepage_patch = deckValue(kSeepagePatchWords, locking.word("Seepage Patch"));
   spec.averaging_length = locking.real("Averaging Length (m)");
+  spec.checkerboard_filter = locking.boolean("Checkerboard Filter");
   return spec;
 }
 

@@ -177,6 +177,43 @@ void sumPatchesOverRanks(AveragingScratch& scratch) {
     }
 }
 
+/// The checkerboard filter of the element sums (AveragingScratch::useCheckerboardFilter):
+/// two passes over the rows, the quotients t first, then the filtered sums.
+void filterElementAverages(AveragingScratch& s) {
+  const int rows = static_cast<int>(s.element_sums.extent(0)), channels = s.channels();
+  if (static_cast<int>(s.filter_quotients.extent(0)) != rows)
+    s.filter_quotients = Kokkos::View<Real**, MemSpace>("averaging_filter", rows, channels);
+  const auto sums = s.element_sums;
+  const auto quotient = s.filter_quotients;
+  const auto start = s.neighbour_start, neighbour = s.neighbour_rows;
+  const Real share = s.neighbour_share;
+  Kokkos::parallel_for(
+      "averaging_filter_quotients", Kokkos::RangePolicy<ExecSpace>(0, rows),
+      KOKKOS_LAMBDA(const int r) {
+        for (int c = 0; c < channels; ++c) {
+          const Real weight = sums(r, 2 * c + 1);
+          if (weight == 0) {
+            quotient(r, c) = 0;
+            continue;
+          }
+          Real shared = 0.5 * weight;
+          for (int k = start(r); k < start(r + 1); ++k)
+            shared += share * sums(neighbour(k), 2 * c + 1);
+          quotient(r, c) = sums(r, 2 * c) / shared;
+        }
+      });
+  Kokkos::parallel_for(
+      "averaging_filter_sums", Kokkos::RangePolicy<ExecSpace>(0, rows), KOKKOS_LAMBDA(const int r) {
+        for (int c = 0; c < channels; ++c) {
+          const Real weight = sums(r, 2 * c + 1);
+          if (weight == 0) continue;
+          Real q = 0.5 * quotient(r, c);
+          for (int k = start(r); k < start(r + 1); ++k) q += share * quotient(neighbour(k), c);
+          sums(r, 2 * c) = weight * q;
+        }
+      });
+}
+
 }  // namespace
 
 void divideNodeSums(const ActiveNodes& active, const AveragingScratch& scratch) {
@@ -236,6 +273,7 @@ void averagePointValues(const MaterialPoints& points, const PointShapes& shapes,
                         const ActiveNodes& active, AveragingScratch& scratch,
                         NodalExchange* exchange) {
   sumPointValues(points, shapes, active, scratch, exchange);
+  if (scratch.filtersElementAverages()) filterElementAverages(scratch);
   if (scratch.nodal()) divideNodeSums(active, scratch);
   withShapeFamily(shapes, [&](auto family) {
     withChannelCount(scratch.channels(), [&](auto n) {

@@ -34,10 +34,12 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
     : exchange_(exchange) {
   const int nodes = mesh.numNodes();
   AveragingUse strain, pressure;
-  Real length = 0;  // one for every material with an element average (checkDeck)
+  Real length = 0;      // one for every material with an element average (checkDeck)
+  bool filter = false;  // the same
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
     length = std::max(length, material.locking.averaging_length);
+    filter = filter || material.locking.checkerboard_filter;
     strain.add(static_cast<int>(material.locking.volumetric_strain));
     pressure.add(material.phase == PhaseModel::Saturated
                      ? static_cast<int>(material.locking.liquid_pressure)
@@ -63,12 +65,32 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
     Kokkos::deep_copy(nodal_m_, host);
   }
   int element_rows = mesh.numElements();
+  Kokkos::View<const int*, MemSpace> row_e;  // empty: one row an element
   if (length > 0 && (strain.elements || pressure.elements)) {
     // (the scratches' views keep the map alive)
     const AveragingPatches patches = buildAveragingPatches(mesh, length);
     element_rows = patches.count;
+    row_e = patches.patch_e;
     increments_.usePatches(patches.patch_e, comm);
     pressure_increments_.usePatches(patches.patch_e, comm);
+  }
+  if (filter && (strain.elements || pressure.elements)) {
+    // An element's neighbours may belong to another rank. On several ranks each element is
+    // made a patch of its own, whose sums are completed over the ranks like any patch's
+    // (every rank then filters the whole mesh's rows; an element's sums come from one rank,
+    // so the completed sums are its bits and the ranks give one rank's results).
+    if (comm != MPI_COMM_NULL && row_e.extent(0) == 0) {
+      Kokkos::View<int*, MemSpace> own("averaging_element_as_patch", element_rows);
+      Kokkos::parallel_for(
+          "averaging_element_as_patch", Kokkos::RangePolicy<ExecSpace>(0, element_rows),
+          KOKKOS_LAMBDA(const int e) { own(e) = e; });
+      row_e = own;
+      increments_.usePatches(row_e, comm);
+      pressure_increments_.usePatches(row_e, comm);
+    }
+    const RowNeighbours neighbours = buildRowNeighbours(mesh, row_e, element_rows);
+    increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
+    pressure_increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
   }
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);

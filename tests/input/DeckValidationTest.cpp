@@ -290,6 +290,14 @@ TEST(DeckValidation, OneMaterialPerBlock) {
                   "block 'soil' already holds material 'soil'");
 }
 
+/// A second material, in block clay, that averages its liquid pressure per element (so it
+/// shares the element averages' rows with the first); replaces "  Stages:".
+const std::string kClayAveragingPressurePerElement =
+    "    clay:\n      Block: clay\n      Porosity: 0.3\n      Solid Density (kg/m3): 2650\n"
+    "      Solid: {Model: linear elastic, Young's Modulus (Pa): 5.0e6, Poisson's Ratio: 0.3}\n"
+    "      Conductivity: {Intrinsic Permeability (m2): 1.0e-12}\n"
+    "      Locking Mitigation: {Liquid Pressure Averaging: element}\n  Stages:";
+
 TEST(DeckValidation, AveragingLengthNeedsAnElementAverageAndOneLength) {
   const std::string porosity = "Porosity: 0.4";
   expectDeckError(replaced(kBaseDeck, porosity,
@@ -306,15 +314,30 @@ TEST(DeckValidation, AveragingLengthNeedsAnElementAverageAndOneLength) {
       "Length (m): 0.2}";
   EXPECT_NO_THROW(parseText(replaced(kBaseDeck, porosity, element_average)));
   // a second material averaging per element with another length (or none) shares the sums
-  const std::string clay =
-      "    clay:\n      Block: clay\n      Porosity: 0.3\n      Solid Density (kg/m3): 2650\n"
-      "      Solid: {Model: linear elastic, Young's Modulus (Pa): 5.0e6, Poisson's Ratio: 0.3}\n"
-      "      Conductivity: {Intrinsic Permeability (m2): 1.0e-12}\n"
-      "      Locking Mitigation: {Liquid Pressure Averaging: element}\n  Stages:";
+  const std::string clay = kClayAveragingPressurePerElement;
   expectDeckError(replaced(replaced(kBaseDeck, porosity, element_average), "  Stages:", clay),
                   "Materials/clay/Locking Mitigation/Averaging Length (m)",
                   "must be the same for every material with an element average (0.2 in "
                   "material 'soil'), got 0");
+}
+
+TEST(DeckValidation, CheckerboardFilterNeedsAnElementAverageEverywhere) {
+  const std::string porosity = "Porosity: 0.4";
+  expectDeckError(replaced(kBaseDeck, porosity,
+                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
+                           "nodal, Checkerboard Filter: true}"),
+                  "Materials/soil/Locking Mitigation/Checkerboard Filter",
+                  "applies to element averages");
+  const std::string filtered =
+      "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: element, "
+      "Checkerboard Filter: true}";
+  EXPECT_NO_THROW(parseText(replaced(kBaseDeck, porosity, filtered)));
+  // a second material's element averages share the rows, so the filter too
+  const std::string clay = kClayAveragingPressurePerElement;
+  expectDeckError(replaced(replaced(kBaseDeck, porosity, filtered), "  Stages:", clay),
+                  "Materials/clay/Locking Mitigation/Checkerboard Filter",
+                  "must be the same for every material with an element average (material "
+                  "'soil' has true)");
 }
 
 TEST(DeckValidation, FirstErrorInDeckOrderIsReported) {

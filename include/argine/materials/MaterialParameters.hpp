@@ -57,6 +57,10 @@ struct LockingMitigationSpec {
   /// the mesh (physics/AveragingPatches.hpp), so that their length does not shrink with the
   /// cells; 0: one element each
   Real averaging_length = 0;
+  /// the `element` averages of each step passed through the filter q <- q/2 + (sum of the
+  /// edge neighbours' q)/(2 n), n the most edge neighbours a row has (4 on a grid of cells),
+  /// which removes the averages' checkerboard mode (physics/PointValueAveraging.hpp)
+  bool checkerboard_filter = false;
 };
 
 struct LiquidSpec {

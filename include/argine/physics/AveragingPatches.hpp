@@ -24,6 +24,20 @@ struct AveragingPatches {
   int count = 0;
 };
 
+/// Which rows of the element averages (elements, or patches) touch along an edge: the
+/// checkerboard filter's neighbours (`Checkerboard Filter`, PointValueAveraging.hpp).
+struct RowNeighbours {
+  /// Row r's neighbours are rows(start(r)) .. rows(start(r + 1) - 1), each once.
+  Kokkos::View<int*, MemSpace> start, rows;
+  int most = 0;  ///< the most neighbours a row has (4 on a grid of cells, 3 on triangles)
+};
+
+/// The edge neighbours of `row_count` rows, row_e(e) the row of element e (empty: the
+/// element itself): two rows are neighbours where an element of one shares an edge (two
+/// consecutive corners) with an element of the other.
+RowNeighbours buildRowNeighbours(const Mesh& mesh, Kokkos::View<const int*, MemSpace> row_e,
+                                 int row_count);
+
 /// The patches of side `length` (> 0) over `mesh`'s elements.
 AveragingPatches buildAveragingPatches(const Mesh& mesh, Real length);
 

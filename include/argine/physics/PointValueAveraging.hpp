@@ -66,6 +66,11 @@ struct AveragingScratch {
   /// buffer, kept so that no step allocates them.
   std::vector<CompensatedReal> patch_parts;
   std::vector<Real> patch_buffer;
+  /// The checkerboard filter of the element averages (useCheckerboardFilter): per row of
+  /// element_sums its edge neighbours (AveragingPatches.hpp); empty: no filter.
+  Kokkos::View<const int*, MemSpace> neighbour_start, neighbour_rows;
+  Real neighbour_share = 0;                         ///< 1 / (2 n), n the most neighbours a row has
+  Kokkos::View<Real**, MemSpace> filter_quotients;  ///< (row, channel): the filter's S / D
   /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w. After averagePointValues
   /// (node, 2c) holds the node's average, the quotient of the two, at the active nodes.
   Kokkos::View<Real**, MemSpace> node_sums;
@@ -88,6 +93,22 @@ struct AveragingScratch {
     patch_e = patch_of_element;
     patch_comm = comm;
   }
+  /// The element averages filtered, after the sums, by
+  ///   q_r <- q_r / 2 + sum_{s ~ r} q_s / (2 n)
+  /// in the conservative form S_r <- W_r (t_r / 2 + sum_{s ~ r} t_s / (2 n)),
+  /// t_s = S_s / (W_s / 2 + sum_{u ~ s} W_u / (2 n)), which keeps sum_r S_r (each row's sum
+  /// shared among itself and its neighbours in proportion to their weights) and is the plain
+  /// filter where the weights are equal. On a grid of cells (n = 4) it maps the checkerboard
+  /// pattern (-1)^(i + j) to zero and a smooth field q to q + h^2 lap(q) / 8.
+  /// `start`, `rows`: each row's edge neighbours (RowNeighbours); the rows' sums must be
+  /// complete on this rank (one rank, or rows of patches completed over the ranks).
+  void useCheckerboardFilter(Kokkos::View<const int*, MemSpace> start,
+                             Kokkos::View<const int*, MemSpace> rows, int most) {
+    neighbour_start = start;
+    neighbour_rows = rows;
+    neighbour_share = most > 0 ? 0.5 / most : 0;
+  }
+  bool filtersElementAverages() const { return neighbour_start.extent(0) > 0; }
   /// The per-point views for `points` points (kept when the count is unchanged).
   void fitPoints(int points);
   /// Allocates (on) or empties (off) the low parts.
