@@ -298,44 +298,41 @@ const std::string kClayAveragingPressurePerElement =
     "      Conductivity: {Intrinsic Permeability (m2): 1.0e-12}\n"
     "      Locking Mitigation: {Liquid Pressure Averaging: element}\n  Stages:";
 
+/// The base deck with `Locking Mitigation: {mitigation}` on its material soil.
+std::string withLocking(const std::string& mitigation) {
+  return replaced(kBaseDeck, "Porosity: 0.4",
+                  "Porosity: 0.4\n      Locking Mitigation: {" + mitigation + "}");
+}
+
+/// `deck` with the second material kClayAveragingPressurePerElement.
+std::string withClay(const std::string& deck) {
+  return replaced(deck, "  Stages:", kClayAveragingPressurePerElement);
+}
+
 TEST(DeckValidation, AveragingLengthNeedsAnElementAverageAndOneLength) {
-  const std::string porosity = "Porosity: 0.4";
-  expectDeckError(replaced(kBaseDeck, porosity,
-                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
-                           "nodal, Averaging Length (m): 0.2}"),
-                  "Materials/soil/Locking Mitigation/Averaging Length (m)",
+  const std::string key = "Materials/soil/Locking Mitigation/Averaging Length (m)";
+  expectDeckError(withLocking("Volumetric Strain Averaging: nodal, Averaging Length (m): 0.2"), key,
                   "applies to element averages");
-  expectDeckError(replaced(kBaseDeck, porosity,
-                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
-                           "element, Averaging Length (m): -0.2}"),
-                  "Materials/soil/Locking Mitigation/Averaging Length (m)", "-0.2");
-  const std::string element_average =
-      "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: element, Averaging "
-      "Length (m): 0.2}";
-  EXPECT_NO_THROW(parseText(replaced(kBaseDeck, porosity, element_average)));
+  expectDeckError(withLocking("Volumetric Strain Averaging: element, Averaging Length (m): -0.2"),
+                  key, "-0.2");
+  const std::string deck =
+      withLocking("Volumetric Strain Averaging: element, Averaging Length (m): 0.2");
+  EXPECT_NO_THROW(parseText(deck));
   // a second material averaging per element with another length (or none) shares the sums
-  const std::string clay = kClayAveragingPressurePerElement;
-  expectDeckError(replaced(replaced(kBaseDeck, porosity, element_average), "  Stages:", clay),
-                  "Materials/clay/Locking Mitigation/Averaging Length (m)",
+  expectDeckError(withClay(deck), "Materials/clay/Locking Mitigation/Averaging Length (m)",
                   "must be the same for every material with an element average (0.2 in "
                   "material 'soil'), got 0");
 }
 
 TEST(DeckValidation, CheckerboardFilterNeedsAnElementAverageEverywhere) {
-  const std::string porosity = "Porosity: 0.4";
-  expectDeckError(replaced(kBaseDeck, porosity,
-                           "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: "
-                           "nodal, Checkerboard Filter: true}"),
+  expectDeckError(withLocking("Volumetric Strain Averaging: nodal, Checkerboard Filter: true"),
                   "Materials/soil/Locking Mitigation/Checkerboard Filter",
                   "applies to element averages");
-  const std::string filtered =
-      "Porosity: 0.4\n      Locking Mitigation: {Volumetric Strain Averaging: element, "
-      "Checkerboard Filter: true}";
-  EXPECT_NO_THROW(parseText(replaced(kBaseDeck, porosity, filtered)));
+  const std::string deck =
+      withLocking("Volumetric Strain Averaging: element, Checkerboard Filter: true");
+  EXPECT_NO_THROW(parseText(deck));
   // a second material's element averages share the rows, so the filter too
-  const std::string clay = kClayAveragingPressurePerElement;
-  expectDeckError(replaced(replaced(kBaseDeck, porosity, filtered), "  Stages:", clay),
-                  "Materials/clay/Locking Mitigation/Checkerboard Filter",
+  expectDeckError(withClay(deck), "Materials/clay/Locking Mitigation/Checkerboard Filter",
                   "must be the same for every material with an element average (material "
                   "'soil' has true)");
 }
