@@ -21,6 +21,11 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
   mobilised volume   the volume of the points that moved > 10 cm (m^3 per m)
   probe |u|          the displacement of the scene's probes MP1-MP3 (DIR/NAME_probe_*.csv, the
                      material point nearest each probe's position at the start; m)
+  probe at position  the displacement of the material that started at each probe's position
+                     (PROBE_POSITIONS), interpolated linearly between the points' initial
+                     positions (m): the same material on every mesh, where the nearest point
+                     lies up to half a point spacing away and elsewhere on each mesh (MP3:
+                     2-4 cm apart in y between meshes, in the toe's steep gradient)
 
 and, as diagnostics of the moving mass's water (one table per time, not charted):
 
@@ -64,6 +69,8 @@ WATER = ("volume gain (L/m)", "of it near the surface (L/m)", "gain per cell (1e
          "water drawn (L/m)", "made inside (L/m)",
          "mass p_L (kPa)")
 PROBES = ("MP1_crest", "MP2_slope", "MP3_toe")  # the scenes' probes (deck Probes/Points)
+# their positions in the levee_drawdown and levee_rainfall decks (Probes/Points/Position, m)
+PROBE_POSITIONS = {"MP1_crest": (1.6, 2.9), "MP2_slope": (3.75, 1.4), "MP3_toe": (5.8, 0.05)}
 
 
 def probe_displacements(directory, name, times):
@@ -117,6 +124,22 @@ def measure(x0, y0, ux, uy, volume):
     sliding = column & (u >= 0.5 * top)
     out["slip depth"] = float(CREST_Y - y0[sliding].min()) if top > MOVED else 0.0
     return out
+
+
+def displacement_at(x0, y0, positions):
+    """A function of (ux, uy) giving |u| at each of `positions` (initial coordinates, m),
+    linear on the Delaunay triangulation of the initial positions (x0, y0), built once; nan
+    outside their hull."""
+    from scipy.interpolate import LinearNDInterpolator
+    from scipy.spatial import Delaunay
+
+    triangulation = Delaunay(np.column_stack([x0, y0]))
+    where = np.asarray(positions, dtype=float)
+
+    def at(ux, uy):
+        u = LinearNDInterpolator(triangulation, np.column_stack([ux, uy]))(where)
+        return np.hypot(u[:, 0], u[:, 1])
+    return at
 
 
 def depth_below_surface(x, y):
@@ -224,6 +247,12 @@ def main():
         probes = probe_displacements(directory, name, [args.start + t for t in rows])
         for t in rows:
             rows[t].update(probes.get(args.start + t, {}))
+        at_positions = displacement_at(x0, y0, list(PROBE_POSITIONS.values()))
+        for t in rows:
+            k = int(np.argmin(np.abs(time - (args.start + t))))
+            u = at_positions(v["displ_x"][k], v["displ_y"][k])
+            rows[t].update({f"probe {p} at position |u|": float(value)
+                            for p, value in zip(PROBE_POSITIONS, u)})
         wall = wall_given.get(float(h), wall_time(directory, name))
         runs.append({"h": float(h), "points": len(x0), "wall": wall,
                      "rows": rows, "water": water, "series": series[0] if series else ""})
@@ -333,7 +362,7 @@ def table(label, runs, times):
               + " | changes to the next finer | observed order | Richardson limit "
               "| finest with error bar |")
         print("|---|" + "---|" * (len(runs) + 4))
-        probes = [q for q in (f"probe {p} |u|" for p in PROBES)
+        probes = [q for p in PROBES for q in (f"probe {p} |u|", f"probe {p} at position |u|")
                   if any(q in r["rows"].get(t, {}) for r in runs)]
         for q in list(QUANTITIES) + probes:
             values = [r["rows"][t].get(q, math.nan) if t in r["rows"] else math.nan

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Self-check of levee_convergence.py's observed order and error bar (CTest
 scripts.levee_convergence_selfcheck, < 1 s) on sequences whose order and limit are known by
-hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m); and its
-depth below the surface on five points."""
+hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m); its
+depth below the surface on five points; and its displacement at a probe's position."""
 import math
 import os
 import sys
@@ -72,6 +72,19 @@ depth = lc.depth_below_surface(np.array([0.02, 0.08, 0.12, 0.15, 0.19]),
                                np.array([1.0, 0.7, 0.4, 0.45, 0.1]))
 for got, expected, what in zip(depth, [0.0, 0.3, 0.05, 0.0, 0.35], "abcde"):
     check(f"depth below the surface, point {what}", got, expected, 1e-12)
+
+# The material at a probe's position: a displacement linear in the initial position is
+# interpolated exactly. Points on the lattice {0, 1, 2}^2 with u_x = 0.1 + 0.2 x + 0.3 y and
+# u_y = -0.4 + 0.1 x: at (0.5, 1.5) u = (0.65, -0.35), |u| = sqrt(0.545); at the corner (2, 2)
+# u = (1.1, -0.2), |u| = sqrt(1.25); outside the points' hull, at (3, 3), nan.
+gx, gy = np.meshgrid([0.0, 1.0, 2.0], [0.0, 1.0, 2.0])
+gx, gy = gx.ravel(), gy.ravel()
+at = lc.displacement_at(gx, gy, [(0.5, 1.5), (2.0, 2.0), (3.0, 3.0)])
+u = at(0.1 + 0.2 * gx + 0.3 * gy, -0.4 + 0.1 * gx)
+check("probe at position, inside", u[0], math.sqrt(0.545), 1e-12)
+check("probe at position, corner", u[1], math.sqrt(1.25), 1e-12)
+if not math.isnan(u[2]):
+    failures.append(f"probe at position outside the points: {u[2]} should be nan")
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
