@@ -68,9 +68,10 @@ QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume
 WATER = ("volume gain (L/m)", "of it near the surface (L/m)", "gain per cell (1e-3)",
          "water drawn (L/m)", "made inside (L/m)",
          "mass p_L (kPa)")
-PROBES = ("MP1_crest", "MP2_slope", "MP3_toe")  # the scenes' probes (deck Probes/Points)
-# their positions in the levee_drawdown and levee_rainfall decks (Probes/Points/Position, m)
+# the scenes' probes and their positions in the levee_drawdown and levee_rainfall decks
+# (Probes/Points/Position, m)
 PROBE_POSITIONS = {"MP1_crest": (1.6, 2.9), "MP2_slope": (3.75, 1.4), "MP3_toe": (5.8, 0.05)}
+PROBES = tuple(PROBE_POSITIONS)
 
 
 def probe_displacements(directory, name, times):
@@ -236,23 +237,20 @@ def main():
         rows, water = {}, {}
         k0 = int(np.argmin(np.abs(time - args.start)))
         drawn = water_drawn(directory, name, args.start, [args.start + t for t in args.times])
+        at_positions = displacement_at(x0, y0, list(PROBE_POSITIONS.values()))
         for t in args.times:
             k = int(np.argmin(np.abs(time - (args.start + t))))
             if abs(time[k] - (args.start + t)) > 1e-6:
                 continue  # this run did not reach t
             rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
+            rows[t].update({f"probe {p} at position |u|": float(value) for p, value in
+                            zip(PROBES, at_positions(v["displ_x"][k], v["displ_y"][k]))})
             water[t] = water_of_moving_mass(float(h), x0, y0, v["displ_x"], v["displ_y"],
                                             v["volume"], v.get("pressure_liquid"), k0, k)
             water[t].update(drawn.get(args.start + t, {}))
         probes = probe_displacements(directory, name, [args.start + t for t in rows])
         for t in rows:
             rows[t].update(probes.get(args.start + t, {}))
-        at_positions = displacement_at(x0, y0, list(PROBE_POSITIONS.values()))
-        for t in rows:
-            k = int(np.argmin(np.abs(time - (args.start + t))))
-            u = at_positions(v["displ_x"][k], v["displ_y"][k])
-            rows[t].update({f"probe {p} at position |u|": float(value)
-                            for p, value in zip(PROBE_POSITIONS, u)})
         wall = wall_given.get(float(h), wall_time(directory, name))
         runs.append({"h": float(h), "points": len(x0), "wall": wall,
                      "rows": rows, "water": water, "series": series[0] if series else ""})
