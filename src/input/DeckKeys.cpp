@@ -267,11 +267,13 @@ ListSchema lockingMitigationKeys() {
   locking.add(KeySpec::boolean(
                   "Checkerboard Filter",
                   "the element averages of Volumetric Strain Averaging (and of "
-                  "Liquid Pressure Averaging) filtered each step: an element's (or "
-                  "patch's) average becomes half its own plus, from each edge "
-                  "neighbour, 1/(2 n) of the neighbour's, n the most edge "
-                  "neighbours an element has (4 on a grid of cells), with the "
-                  "sums redistributed so that sum V q is kept. One value a cell "
+                  "Liquid Pressure Averaging) filtered each step by an exchange "
+                  "between edge neighbours: each pair passes min(W_r, W_s) (q_s - "
+                  "q_r) / (2 n) of sum V q, W = sum V of an element (or patch), n the "
+                  "most edge neighbours an element has (4 on a grid of cells): sum V "
+                  "q kept, a uniform value kept where a surface cuts or ends the "
+                  "cells, and with equal weights half its own plus 1/(2 n) of each "
+                  "neighbour's. One value a cell "
                   "leaves the alternating (checkerboard) pattern of the cells' "
                   "mean stress free of any nodal force, and a sliding body grows "
                   "it; the filter removes that mode and smooths the rest over one "

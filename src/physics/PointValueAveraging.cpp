@@ -4,6 +4,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "argine/materials/KernelMath.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/DistributedStep.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -178,28 +179,22 @@ void sumPatchesOverRanks(AveragingScratch& scratch) {
 }
 
 /// The checkerboard filter of the element sums (AveragingScratch::useCheckerboardFilter):
-/// two passes over the rows, the quotients t first, then the filtered sums.
+/// two passes over the rows, the averages q = S / W first, then the filtered sums
+/// S_r + share sum_s min(W_r, W_s) (q_s - q_r).
 void filterElementAverages(AveragingScratch& s) {
   const int rows = static_cast<int>(s.element_sums.extent(0)), channels = s.channels();
-  if (static_cast<int>(s.filter_quotients.extent(0)) != rows)
-    s.filter_quotients = Kokkos::View<Real**, MemSpace>("averaging_filter", rows, channels);
+  if (static_cast<int>(s.filter_averages.extent(0)) != rows)
+    s.filter_averages = Kokkos::View<Real**, MemSpace>("averaging_filter", rows, channels);
   const auto sums = s.element_sums;
-  const auto quotient = s.filter_quotients;
+  const auto average = s.filter_averages;
   const auto start = s.neighbour_start, neighbour = s.neighbour_rows;
   const Real share = s.neighbour_share;
   Kokkos::parallel_for(
-      "averaging_filter_quotients", Kokkos::RangePolicy<ExecSpace>(0, rows),
+      "averaging_filter_averages", Kokkos::RangePolicy<ExecSpace>(0, rows),
       KOKKOS_LAMBDA(const int r) {
         for (int c = 0; c < channels; ++c) {
           const Real weight = sums(r, 2 * c + 1);
-          if (weight == 0) {
-            quotient(r, c) = 0;
-            continue;
-          }
-          Real shared = 0.5 * weight;
-          for (int k = start(r); k < start(r + 1); ++k)
-            shared += share * sums(neighbour(k), 2 * c + 1);
-          quotient(r, c) = sums(r, 2 * c) / shared;
+          average(r, c) = weight == 0 ? Real(0) : sums(r, 2 * c) / weight;
         }
       });
   Kokkos::parallel_for(
@@ -207,9 +202,13 @@ void filterElementAverages(AveragingScratch& s) {
         for (int c = 0; c < channels; ++c) {
           const Real weight = sums(r, 2 * c + 1);
           if (weight == 0) continue;
-          Real q = 0.5 * quotient(r, c);
-          for (int k = start(r); k < start(r + 1); ++k) q += share * quotient(neighbour(k), c);
-          sums(r, 2 * c) = weight * q;
+          Real exchanged = 0;  // an empty neighbour (weight 0) exchanges nothing
+          for (int k = start(r); k < start(r + 1); ++k) {
+            const int other = neighbour(k);
+            const Real pair = kmath::fmin(weight, sums(other, 2 * c + 1));
+            exchanged += pair * (average(other, c) - average(r, c));
+          }
+          sums(r, 2 * c) += share * exchanged;
         }
       });
 }

@@ -1,8 +1,10 @@
 // The checkerboard filter of the element averages (`Checkerboard Filter`,
 // AveragingScratch::useCheckerboardFilter in physics/PointValueAveraging.hpp) and the edge
 // neighbours it reads (buildRowNeighbours, physics/AveragingPatches.hpp): neighbours of a
-// grid by hand, one cell's value shared by hand, sum w q kept, the checkerboard pattern
-// removed and a linear field kept where a cell and its neighbours have full neighbourhoods.
+// grid by hand, one cell's value shared by hand (also with a part-filled neighbour), sum w q
+// kept, a uniform field kept at the grid's edges, in part-filled and next to empty cells, the
+// checkerboard pattern removed and a linear field kept where a cell and its neighbours have
+// full neighbourhoods.
 
 #include <gtest/gtest.h>
 
@@ -102,6 +104,49 @@ TEST(CheckerboardFilter, OneCellsValueSharedByHand) {
     const int distance = std::abs(c[0] - 1) + std::abs(c[1] - 1);
     const Real expected = distance == 0 ? 0.5 : distance == 1 ? 0.125 : 0.0;
     EXPECT_DOUBLE_EQ(q[p], expected) << "cell " << c[0] << ", " << c[1];
+  }
+}
+
+TEST(CheckerboardFilter, APartFilledNeighbourExchangesByItsOwnWeight) {
+  // 3 x 3 cells, 1 in the centre cell, 0 elsewhere; every cell weighs 1 but the centre's right
+  // neighbour (2, 1), part-filled, 0.2. Each pair exchanges min(W_r, W_s) (q_s - q_r) / 8:
+  // the centre keeps 1 - (1 + 1 + 1 + 0.2) / 8 = 0.6, the full edge neighbours get 1/8, the
+  // part-filled one 0.2 / 8 of sum, so 1/8 as its average too; the corners 0 (sum 1 kept).
+  const FilterScene scene(3);
+  const auto value = [&](int p) {
+    const auto c = scene.cell(p);
+    return c[0] == 1 && c[1] == 1 ? 1.0 : 0.0;
+  };
+  const auto weight = [&](int p) {
+    const auto c = scene.cell(p);
+    return c[0] == 2 && c[1] == 1 ? 0.05 : 0.25;
+  };
+  const std::vector<Real> q = filtered(scene, value, weight);
+  for (int p = 0; p < scene.points.count; ++p) {
+    const auto c = scene.cell(p);
+    const int distance = std::abs(c[0] - 1) + std::abs(c[1] - 1);
+    const Real expected = distance == 0 ? 0.6 : distance == 1 ? 0.125 : 0.0;
+    EXPECT_NEAR(q[p], expected, 1e-15) << "cell " << c[0] << ", " << c[1];
+  }
+}
+
+TEST(CheckerboardFilter, KeepsAUniformFieldAtEdgesInPartFilledAndNextToEmptyCells) {
+  // 5 x 5 cells of unequal weights, the top row's left three cells empty (weight 0, as cells
+  // a surface leaves): a uniform value stays uniform in every cell that has points, at the
+  // grid's edges (3 or 2 neighbours) too. (Sharing each row's sum in proportion to the
+  // neighbourhood's weights, the filter's earlier form, gave 0.98 of it to an edge cell of
+  // equal cells, 0.95 to a corner and 0.49 to a cell a 45-degree face cuts to a tenth.)
+  const FilterScene scene(5);
+  const auto empty = [&](int p) {
+    const auto c = scene.cell(p);
+    return c[1] == 4 && c[0] <= 2;
+  };
+  const auto weight = [&](int p) { return empty(p) ? 0.0 : 0.1 + 0.07 * ((p * 7) % 11); };
+  const std::vector<Real> q = filtered(
+      scene, [](int) { return 2.5; }, weight);
+  for (int p = 0; p < scene.points.count; ++p) {
+    if (empty(p)) continue;
+    EXPECT_NEAR(q[p], 2.5, 1e-14) << "point " << p;
   }
 }
 

@@ -69,8 +69,8 @@ struct AveragingScratch {
   /// The checkerboard filter of the element averages (useCheckerboardFilter): per row of
   /// element_sums its edge neighbours (AveragingPatches.hpp); empty: no filter.
   Kokkos::View<const int*, MemSpace> neighbour_start, neighbour_rows;
-  Real neighbour_share = 0;                         ///< 1 / (2 n), n the most neighbours a row has
-  Kokkos::View<Real**, MemSpace> filter_quotients;  ///< (row, channel): the filter's S / D
+  Real neighbour_share = 0;                        ///< 1 / (2 n), n the most neighbours a row has
+  Kokkos::View<Real**, MemSpace> filter_averages;  ///< (row, channel): the filter's q = S / W
   /// (node, 2c): sum N w q of channel c; (node, 2c + 1): sum N w. After averagePointValues
   /// (node, 2c) holds the node's average, the quotient of the two, at the active nodes.
   Kokkos::View<Real**, MemSpace> node_sums;
@@ -93,13 +93,15 @@ struct AveragingScratch {
     patch_e = patch_of_element;
     patch_comm = comm;
   }
-  /// The element averages filtered, after the sums, by
-  ///   q_r <- q_r / 2 + sum_{s ~ r} q_s / (2 n)
-  /// in the conservative form S_r <- W_r (t_r / 2 + sum_{s ~ r} t_s / (2 n)),
-  /// t_s = S_s / (W_s / 2 + sum_{u ~ s} W_u / (2 n)), which keeps sum_r S_r (each row's sum
-  /// shared among itself and its neighbours in proportion to their weights) and is the plain
-  /// filter where the weights are equal. On a grid of cells (n = 4) it maps the checkerboard
-  /// pattern (-1)^(i + j) to zero and a smooth field q to q + h^2 lap(q) / 8.
+  /// The element averages filtered, after the sums, by an exchange between edge neighbours,
+  ///   S_r <- S_r + sum_{s ~ r} min(W_r, W_s) (q_s - q_r) / (2 n),   q = S / W,
+  /// n the most edge neighbours a row has, an empty row (W = 0) exchanging nothing. Each pair
+  /// passes equal and opposite amounts, so sum_r S_r is kept; a uniform q stays uniform
+  /// wherever the rows end or are part-filled (a surface that cuts the cells); each new q_r
+  /// is a convex combination of q_r (weight >= 1/2) and its neighbours'. Where the weights are
+  /// equal and a row has its n neighbours it is q_r / 2 + sum_{s ~ r} q_s / (2 n): on a grid of
+  /// cells (n = 4) it maps the checkerboard pattern (-1)^(i + j) to zero and a smooth field q
+  /// to q + h^2 lap(q) / 8.
   /// `start`, `rows`: each row's edge neighbours (RowNeighbours); the rows' sums must be
   /// complete on this rank (one rank, or rows of patches completed over the ranks).
   void useCheckerboardFilter(Kokkos::View<const int*, MemSpace> start,
