@@ -128,6 +128,10 @@ void checkElementAveraging(const Deck& deck) {
       throw InputError("Materials/" + material.name + "/Locking Mitigation/Checkerboard Filter",
                        "applies to element averages: needs Volumetric Strain Averaging or "
                        "Liquid Pressure Averaging: element");
+    if (locking.conjugate_mean_stress && locking.volumetric_strain != IncrementAveraging::Element)
+      throw InputError("Materials/" + material.name + "/Locking Mitigation/Conjugate Mean Stress",
+                       "applies to element averages of the volumetric strain: needs Volumetric "
+                       "Strain Averaging: element");
     if (!element) continue;
     if (first == nullptr) {
       first = &material;

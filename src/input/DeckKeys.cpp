@@ -280,6 +280,19 @@ ListSchema lockingMitigationKeys() {
                   "cell (doc/theory.md Sec. 3.3.4); on several MPI ranks each element's sums are "
                   "completed over the ranks; false: off")
                   .byDefault(false));
+  locking.add(KeySpec::boolean(
+                  "Conjugate Mean Stress",
+                  "the nodal forces take each point's in-plane mean stress (s'_xx + s'_yy) / 2 - "
+                  "S_L p_L and its p_L in the liquid's force as the element (or patch) "
+                  "average, filtered where Checkerboard Filter is on, instead of the point's "
+                  "own: the work conjugates of the averaged d eps_vol and div v_L, so that "
+                  "forces and strains see one operator (B-bar; a symmetric stiffness for any "
+                  "tangent); needs Volumetric Strain Averaging: element (doc/theory.md Sec. "
+                  "3.3.4). Incomplete: the points keep their own mean stress and p_L, whose "
+                  "differences from the cell's have no force against them and drift (a wet "
+                  "slide's pore pressures change; doc/verification.md, 'Forces conjugate to "
+                  "the averaged strain'); not for production runs. false: each point's own")
+                  .byDefault(false));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
                             "alpha: each step a point exchanges liquid at alpha k/g (capped for "
                             "stability) with planes of the piezometric pressure p_L + rho_L g y "

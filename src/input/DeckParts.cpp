@@ -380,6 +380,7 @@ LockingMitigationSpec parseLockingMitigation(const DeckSection& locking) {
   spec.seepage_patch = deckValue(kSeepagePatchWords, locking.word("Seepage Patch"));
   spec.averaging_length = locking.real("Averaging Length (m)");
   spec.checkerboard_filter = locking.boolean("Checkerboard Filter");
+  spec.conjugate_mean_stress = locking.boolean("Conjugate Mean Stress");
   return spec;
 }
 

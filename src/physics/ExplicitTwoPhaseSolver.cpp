@@ -314,6 +314,11 @@ void ExplicitTwoPhaseSolver::mapMassesMomentaAndForces() {
   grid_.zero(nodes_in_use_);
   if (nodes_next_changed_) std::swap(nodes_in_use_, nodes_next_);
   nodes_next_changed_ = false;
+  // ---- `Conjugate Mean Stress`: the forces see the averaged mean stress (no-op unless asked)
+  if (averaging_.conjugatesMeanStress()) {
+    averaging_.averageMeanStresses(table_, points_, shapes_, nodes_in_use_);
+    transfer_.mean_stress_shift = averaging_.meanStressShifts();
+  }
   mapPointsToGrid(points_, shapes_, table_.liquidCarrying(), gravity_, transfer_, nodes_in_use_,
                   node_records_, grid_, gridCompensation());
   if (exchange_)  // several ranks: complete the sums

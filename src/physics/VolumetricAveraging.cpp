@@ -47,6 +47,8 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
   }
   strain_ = strain.any();
   pressure_ = pressure.any();
+  for (int m = 0; m < table.count(); ++m)
+    conjugate_ = conjugate_ || table.host(m).locking.conjugate_mean_stress;
   all_nodal_ = strain_;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
@@ -73,6 +75,7 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
     row_e = patches.patch_e;
     increments_.usePatches(patches.patch_e, comm);
     pressure_increments_.usePatches(patches.patch_e, comm);
+    mean_stresses_.usePatches(patches.patch_e, comm);
   }
   if (filter && (strain.elements || pressure.elements)) {
     // An element's neighbours may belong to another rank. On several ranks each element is
@@ -87,13 +90,16 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
       row_e = own;
       increments_.usePatches(row_e, comm);
       pressure_increments_.usePatches(row_e, comm);
+      mean_stresses_.usePatches(row_e, comm);
     }
     const RowNeighbours neighbours = buildRowNeighbours(mesh, row_e, element_rows);
     increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
     pressure_increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
+    mean_stresses_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
   }
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);
+  if (conjugate_) mean_stresses_.allocateSums(2, element_rows, 0);  // element averages only
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
@@ -295,6 +301,49 @@ void VolumetricAveraging::averageNodalChannelsTogether(const MaterialPoints& poi
   withShapeFamily(shapes, [&](auto family) {
     gatherNodalChannels<decltype(family)>(points, shapes, nodal_m_, sums, rates);
   });
+}
+
+void VolumetricAveraging::averageMeanStresses(const MaterialTable& table,
+                                              const MaterialPoints& points,
+                                              const PointShapes& shapes,
+                                              const ActiveNodes& active) {
+  if (!conjugate_) return;
+  const int count = points.count;
+  mean_stresses_.fitPoints(count);
+  if (static_cast<int>(mean_shift_p_.extent(0)) != count)
+    mean_shift_p_ = MeanStressShifts("averaging_mean_stress_shift", count);
+  const auto materials_m = table.materials();
+  const MaterialPoints pts = points;
+  const auto value_pc = mean_stresses_.value_pc;
+  const auto weight_p = mean_stresses_.weight_p;
+  const auto mode_pc = mean_stresses_.mode_pc;
+  const auto shift_p = mean_shift_p_;
+  // channel 0: the mixture's total in-plane mean stress, Bishop chi = S_L (4.5) as in the P2G;
+  // channel 1: p_L, whose B^T p_L V is the liquid's force (4.43). Weight V, as d eps_vol's.
+  Kokkos::parallel_for(
+      "averaging_mean_stress_in", Kokkos::RangePolicy<ExecSpace>(0, count),
+      KOKKOS_LAMBDA(const int p) {
+        const PointMaterial& material = materials_m(pts.material(p));
+        const bool wet = carriesLiquid(material.phase);
+        const int mode = material.locking.conjugate_mean_stress ? kAverageElement : kNone;
+        const Real bishop = wet ? pts.saturation(p) * pts.pressure_liquid(p) : Real(0);
+        weight_p(p) = pts.volume(p);
+        mode_pc(p, 0) = mode;
+        value_pc(p, 0) = (pts.stress_effective(p, XX) + pts.stress_effective(p, YY)) / 2 - bishop;
+        mode_pc(p, 1) = wet ? mode : kNone;
+        value_pc(p, 1) = wet ? pts.pressure_liquid(p) : Real(0);
+        shift_p(p, 0) = value_pc(p, 0);  // the point's own, until the averages come
+        shift_p(p, 1) = value_pc(p, 1);
+      });
+  averagePointValues(points, shapes, active, mean_stresses_, exchange_);
+  Kokkos::parallel_for(
+      "averaging_mean_stress_out", Kokkos::RangePolicy<ExecSpace>(0, count),
+      KOKKOS_LAMBDA(const int p) {
+        for (int c = 0; c < 2; ++c)
+          shift_p(p, c) = mode_pc(p, c) == kNone || pts.element(p) < 0
+                              ? Real(0)
+                              : value_pc(p, c) - shift_p(p, c);
+      });
 }
 
 void VolumetricAveraging::rememberPressures(const MaterialPoints& points) {

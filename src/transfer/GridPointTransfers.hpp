@@ -124,7 +124,11 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
   // subtraction (XY - +0 is XY to the bit): (sxx, syy, -, sxy)
   static_assert(XX == 0 && YY == 1 && XY == 3 && kStressComponents == kLanes,
                 "a point's stress is one Lanes (LayoutRight row)");
-  const Lanes stress = loadBlock(&v.stress_p(p, 0)) - lanesOf(bishop, bishop, 0, 0);
+  // `Conjugate Mean Stress`: the element's mean stress and p_L instead of the point's
+  const Real mean_shift = v.shifted ? v.mean_shift_p(p, 0) : 0;
+  const Real pressure_shift = v.shifted ? v.mean_shift_p(p, 1) : 0;
+  const Real diagonal = bishop - mean_shift;
+  const Lanes stress = loadBlock(&v.stress_p(p, 0)) - lanesOf(diagonal, diagonal, 0, 0);
   const Real weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42
   // liquid (4.41, 4.43, 4.45, 4.46): zero factors for a dry point
   Real m_intrinsic = 0, drag = 0, pressure_volume = 0, weight_liquid = 0, liquid_volume = 0;
@@ -134,7 +138,7 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
     m_intrinsic = rho * volume;
     drag =
         v.porosity_p(p) * v.saturation_p(p) * rho * kStandardGravity / v.conductivity_p(p) * volume;
-    pressure_volume = v.pressure_p(p) * volume;
+    pressure_volume = (v.pressure_p(p) + pressure_shift) * volume;
     weight_liquid = -m_intrinsic * gravity;
     liquid_volume = volume;
     vl[0] = v.velocity_liquid_p(p, 0);

@@ -242,6 +242,9 @@ struct P2GPointViews {
   Kokkos::View<Real* [kDim], MemSpace> position_p;
   Kokkos::View<Real*[kAffineComponents], MemSpace> affine_solid_p, affine_liquid_p;
   Kokkos::View<const Real* [kDim], MemSpace> coordinates_i;
+  // `Conjugate Mean Stress`: the shifts of the mixture's mean stress and of p_L (shifted)
+  MeanStressShifts mean_shift_p;
+  bool shifted = false;
 };
 
 /// What the momentum of a point adds at its node a: m (v + C (x_a - x_p)) with APIC (kAffine),
@@ -277,7 +280,15 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
   const T bishop = wet ? load<T>(v.saturation_p, p) * load<T>(v.pressure_p, p) : splat<T>(0);
   T stress[kStressComponents];
   loadComponents(v.stress_p, p, stress);
-  const T sxx = stress[XX] - bishop, syy = stress[YY] - bishop, sxy = stress[XY];
+  T sxx = stress[XX] - bishop, syy = stress[YY] - bishop;
+  const T sxy = stress[XY];
+  T pressure_shift = splat<T>(0);  // `Conjugate Mean Stress`: the element's means instead
+  if (v.shifted) {
+    const T mean_shift = load<T>(v.mean_shift_p, p, 0);
+    sxx = sxx + mean_shift;
+    syy = syy + mean_shift;
+    pressure_shift = load<T>(v.mean_shift_p, p, 1);
+  }
   const T weight_mixture = -(m_solid + m_liquid) * gravity;  // 4.42, m_m = M_S + M_L
   const T vs[kDim] = {load<T>(v.velocity_solid_p, p, 0), load<T>(v.velocity_solid_p, p, 1)};
   // APIC: the affine matrices and the offsets x_a - x_p
@@ -310,7 +321,7 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
     // Darcy drag per unit liquid volume n S_L rho_L g / k (4.2-4.3, 4.45), g = 9.81.
     const T drag = load<T>(v.porosity_p, p) * load<T>(v.saturation_p, p) * rho * kStandardGravity /
                    load<T>(v.conductivity_p, p) * volume;
-    const T pressure_volume = load<T>(v.pressure_p, p) * volume;
+    const T pressure_volume = (load<T>(v.pressure_p, p) + pressure_shift) * volume;
     const T weight_liquid = -m_intrinsic * gravity;  // 4.41 with M~_L
     const T vl[kDim] = {load<T>(v.velocity_liquid_p, p, 0), load<T>(v.velocity_liquid_p, p, 1)};
     for (int a = 0; a < kNodes; ++a) {
@@ -368,7 +379,9 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
                         points.position,
                         points.affine_velocity_solid,
                         points.affine_velocity_liquid,
-                        transfer.node_coordinates};
+                        transfer.node_coordinates,
+                        transfer.mean_stress_shift,
+                        transfer.mean_stress_shift.extent(0) > 0};
   const auto element_p = points.element;
   const auto local_p = points.local;
   const int count = points.count;

@@ -337,6 +337,18 @@ TEST(DeckValidation, CheckerboardFilterNeedsAnElementAverageEverywhere) {
                   "'soil' has true)");
 }
 
+TEST(DeckValidation, ConjugateMeanStressNeedsAnElementAverageOfTheStrain) {
+  expectDeckError(withLocking("Volumetric Strain Averaging: nodal, Conjugate Mean Stress: true"),
+                  "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
+                  "needs Volumetric Strain Averaging: element");
+  // an element average of the pressure alone gives the strain nothing to be conjugate to
+  expectDeckError(withLocking("Liquid Pressure Averaging: element, Conjugate Mean Stress: true"),
+                  "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
+                  "needs Volumetric Strain Averaging: element");
+  EXPECT_NO_THROW(
+      parseText(withLocking("Volumetric Strain Averaging: element, Conjugate Mean Stress: true")));
+}
+
 TEST(DeckValidation, FirstErrorInDeckOrderIsReported) {
   std::string deck = replaced(kBaseDeck, "Porosity: 0.4", "Porosity: 2");
   deck = replaced(deck, "Element Size (m): 0.1", "Element Size: 0.1");

@@ -61,6 +61,10 @@ struct LockingMitigationSpec {
   /// edge neighbours' q)/(2 n), n the most edge neighbours a row has (4 on a grid of cells),
   /// which removes the averages' checkerboard mode (physics/PointValueAveraging.hpp)
   bool checkerboard_filter = false;
+  /// the nodal forces take, instead of each point's own, the mean stress and liquid pressure
+  /// averaged (and filtered) as the increments are: the work conjugates of the averaged
+  /// d eps_vol and div v_L (B-bar; physics/VolumetricAveraging.hpp)
+  bool conjugate_mean_stress = false;
 };
 
 struct LiquidSpec {

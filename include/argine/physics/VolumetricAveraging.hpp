@@ -24,9 +24,20 @@
 /// Liquid: q = d p_L of the step at saturated points, w = n V (pore volume); then rho_L from
 /// (4.13) and M_L = n rho_L V. sum n V d p_L is kept, so the liquid mass is kept to first
 /// order in d p_L / K_L.
+///
+/// Conjugate mean stress (`Conjugate Mean Stress`, element averaging of d eps_vol): the strain
+/// a point is given, eps_p + (F a)_e(p) - a_p with a the volumetric part and (F a)_e the
+/// (filtered) average of its element, does virtual work sum_p V_p s_p : d eps_p with the
+/// in-plane mean stress m_p = (s_xx + s_yy) / 2 replaced by (F m)_e(p): the same averaging
+/// of m with weight V (F is self-adjoint in the weights V, W F = (W F)^T). So the nodal forces
+/// take the mixture's total mean stress m' - S_L p_L and the liquid's p_L (the conjugate of
+/// the averaged div v_L) as their element's (filtered) averages: a symmetric stiffness for any
+/// tangent, where the point's own mean stress left the filter's coupling of a cracked cell to
+/// an intact neighbour one-sided.
 
 #include "argine/core/Types.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
+#include "argine/transfer/TransferScheme.hpp"
 
 namespace argine {
 
@@ -58,6 +69,15 @@ class VolumetricAveraging {
   void averageStrainIncrements(const MaterialTable& table, const MaterialPoints& points,
                                const PointShapes& shapes, const ActiveNodes& active,
                                PointRates& rates);
+  /// Whether some material's forces take the conjugate mean stress.
+  bool conjugatesMeanStress() const { return conjugate_; }
+  /// Per point the shifts (x: of the mixture's total mean stress, y: of p_L in the liquid's
+  /// force) that give the forces the element's (filtered) averages instead of the point's own
+  /// values (file comment); zero where the point's material does not ask for it. Fills
+  /// meanStressShifts().
+  void averageMeanStresses(const MaterialTable& table, const MaterialPoints& points,
+                           const PointShapes& shapes, const ActiveNodes& active);
+  MeanStressShifts meanStressShifts() const { return mean_shift_p_; }
   /// Keeps p_L of every point before the liquid mass balance of the step.
   void rememberPressures(const MaterialPoints& points);
   /// After the mass balance: averages d p_L = p_L - remembered p_L of the saturated points
@@ -69,6 +89,7 @@ class VolumetricAveraging {
   void compensateSums(bool on) {
     increments_.compensate(on);
     pressure_increments_.compensate(on);
+    mean_stresses_.compensate(on);
   }
 
  private:
@@ -94,6 +115,9 @@ class VolumetricAveraging {
   AveragingScratch increments_;                 ///< the strain and liquid increments (Channel)
   AveragingScratch pressure_increments_;        ///< d p_L (one channel)
   Kokkos::View<Real*, MemSpace> old_pressure_;  ///< p_L before the step
+  bool conjugate_ = false;
+  AveragingScratch mean_stresses_;  ///< the mixture's mean stress and p_L (two channels)
+  MeanStressShifts mean_shift_p_;   ///< averageMeanStresses' shifts
 };
 
 }  // namespace argine

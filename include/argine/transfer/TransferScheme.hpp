@@ -89,12 +89,18 @@ struct XpicPolynomial {
 };
 
 /// What the velocity update and the momentum transfers of a stage need.
+/// Per point the shifts of the P2G's forces (`Conjugate Mean Stress`, physics/
+/// VolumetricAveraging.hpp): (p, 0) added to the mixture's total sigma_xx and sigma_yy, (p, 1)
+/// to p_L in the liquid's force.
+using MeanStressShifts = Kokkos::View<Real* [2], MemSpace>;
+
 struct TransferSettings {
   TransferScheme scheme = TransferScheme::Flip;
   VelocityBlend blend;  ///< FLIP only (XPIC: both shares 1)
   /// APIC: the mesh's node coordinates x_i (the momenta carry C_p (x_i - x_p)).
   Kokkos::View<const Real* [kDim], MemSpace> node_coordinates;
-  XpicPolynomial xpic{};  ///< XPIC: its order and polynomial
+  XpicPolynomial xpic{};                 ///< XPIC: its order and polynomial
+  MeanStressShifts mean_stress_shift{};  ///< empty: each point's own stress in the forces
 };
 
 }  // namespace argine
