@@ -284,14 +284,13 @@ ListSchema lockingMitigationKeys() {
                   "Conjugate Mean Stress",
                   "the nodal forces take each point's in-plane mean stress (s'_xx + s'_yy) / 2 - "
                   "S_L p_L and its p_L in the liquid's force as the element (or patch) "
-                  "average, filtered where Checkerboard Filter is on, instead of the point's "
-                  "own: the work conjugates of the averaged d eps_vol and div v_L, so that "
-                  "forces and strains see one operator (B-bar; a symmetric stiffness for any "
-                  "tangent); needs Volumetric Strain Averaging: element (doc/theory.md Sec. "
-                  "3.3.4). Incomplete: the points keep their own mean stress and p_L, whose "
-                  "differences from the cell's have no force against them and drift (a wet "
-                  "slide's pore pressures change; doc/verification.md, 'Forces conjugate to "
-                  "the averaged strain'); not for production runs. false: each point's own")
+                  "average instead of the point's own: the work conjugates of the averaged d "
+                  "eps_vol and div v_L, so that forces and strains see one operator (B-bar; a "
+                  "symmetric stiffness for any tangent). It keeps a sliding body's cell "
+                  "checkerboard as low as Checkerboard Filter does; needs Volumetric Strain "
+                  "Averaging: element and cannot be "
+                  "combined with Checkerboard Filter (whose null space, the checkerboard, the "
+                  "forces would then not see; doc/theory.md Sec. 3.3.4). false: each point's own")
                   .byDefault(false));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
                             "alpha: each step a point exchanges liquid at alpha k/g (capped for "

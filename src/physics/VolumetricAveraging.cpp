@@ -90,16 +90,15 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
       row_e = own;
       increments_.usePatches(row_e, comm);
       pressure_increments_.usePatches(row_e, comm);
-      mean_stresses_.usePatches(row_e, comm);
     }
     const RowNeighbours neighbours = buildRowNeighbours(mesh, row_e, element_rows);
     increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
     pressure_increments_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
-    mean_stresses_.useCheckerboardFilter(neighbours.start, neighbours.rows, neighbours.most);
   }
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);
-  if (conjugate_) mean_stresses_.allocateSums(2, element_rows, 0);  // element averages only
+  // element averages only, never filtered (checkDeck: the filter's null space would be free)
+  if (conjugate_) mean_stresses_.allocateSums(2, element_rows, 0);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,

@@ -349,6 +349,17 @@ TEST(DeckValidation, ConjugateMeanStressNeedsAnElementAverageOfTheStrain) {
       parseText(withLocking("Volumetric Strain Averaging: element, Conjugate Mean Stress: true")));
 }
 
+TEST(DeckValidation, ConjugateMeanStressRefusesTheCheckerboardFilter) {
+  // the filter's null space (the checkerboard) would be a free mode of the conjugate forces
+  expectDeckError(withLocking("Volumetric Strain Averaging: element, Checkerboard Filter: true, "
+                              "Conjugate Mean Stress: true"),
+                  "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
+                  "cannot be combined with Checkerboard Filter: true");
+  EXPECT_NO_THROW(parseText(withLocking(
+      "Volumetric Strain Averaging: element, Checkerboard Filter: false, Conjugate Mean Stress: "
+      "true")));
+}
+
 TEST(DeckValidation, FirstErrorInDeckOrderIsReported) {
   std::string deck = replaced(kBaseDeck, "Porosity: 0.4", "Porosity: 2");
   deck = replaced(deck, "Element Size (m): 0.1", "Element Size: 0.1");

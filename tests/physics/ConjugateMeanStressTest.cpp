@@ -1,6 +1,6 @@
 // `Conjugate Mean Stress` (physics/VolumetricAveraging.hpp): the forces do the work of the
-// averaged increments. For any point strains and stresses, with element averages filtered
-// between part-filled cells of unequal weight,
+// averaged increments. For any point strains and stresses, with element averages over
+// part-filled cells of unequal weight,
 //   sum_p V_p s_p : eps_bar_p = sum_p V_p (s_p + shift_p I) : eps_p   (the mixture) and
 //   sum_p V_p p_p div_bar_p   = sum_p V_p (p_p + shift_p) div_p       (the liquid),
 // eps_bar, div_bar what averageStrainIncrements gives; without the shifts the two sides
@@ -84,16 +84,16 @@ std::array<Real, 2> work(const MaterialPoints& points, const PointRates& rates,
   return w;
 }
 
-/// The soil of the tests: element averages of d eps_vol, filtered, forces conjugate.
+/// The soil of the tests: element averages of d eps_vol, forces conjugate (never with the
+/// checkerboard filter: checkDeck).
 MaterialSpec conjugateSoil() {
   MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 5e7, 0.3, 0.4);
   soil.locking.volumetric_strain = IncrementAveraging::Element;
-  soil.locking.checkerboard_filter = true;
   soil.locking.conjugate_mean_stress = true;
   return soil;
 }
 
-TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheFilteredIncrements) {
+TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheAveragedIncrements) {
   const Mesh mesh = test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Quad4);
   MaterialPoints points = test::seedUniform(mesh);
   const MaterialSpec soil = conjugateSoil();
@@ -128,7 +128,7 @@ TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheFilteredIncrements) {
   }
 }
 
-TEST(ConjugateMeanStress, ShiftsAreTheFilteredCellMeanLessThePointsOwn) {
+TEST(ConjugateMeanStress, ShiftsAreTheCellMeanLessThePointsOwn) {
   // One material without the key beside the soil: its points keep their own (zero shift); a
   // cell of points of one mean stress and p_L, among neighbours of the same, keeps them.
   const Mesh mesh = test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Quad4);
@@ -168,45 +168,46 @@ TEST(ConjugateMeanStress, ShiftsAreTheFilteredCellMeanLessThePointsOwn) {
   for (int p = 0; p < points.count; ++p)
     for (int c = 0; c < 2; ++c) EXPECT_NEAR(shift(p, c), 0, 1e-9) << "point " << p;
 
-  // Now the points of one cell at mean -3000 + 800 (total: less S p_L = 1000) and p_L 2000 +
-  // 400: that cell, all of whose neighbours are full, keeps 1/2 + (W from the cell's own
-  // exchanges) of its excess: with the centre cell (1, 1) of equal weights, 1/2 of it, each
-  // edge neighbour 1/8, corners 0 (CheckerboardFilter.OneCellsValueSharedByHand).
-  int centre = -1;
+  // Now one point of the centre cell at mean -3000 + 800 (total: less S p_L = 1000) and p_L
+  // 2000 + 400: its cell's four points of equal volume average a quarter of its excess, the
+  // other cells keep theirs.
+  int raised = -1;
   {
     auto stress = hostCopy(points.stress_effective);
     auto pressure = hostCopy(points.pressure_liquid);
     auto material = hostCopy(points.material);
-    const auto element = hostCopy(points.element);
     const auto position = hostCopy(points.position);
+    const auto volume = hostCopy(points.volume);
     for (int p = 0; p < points.count; ++p) {
       material(p) = 0;
       const bool in_centre = position(p, 0) > 0.5 && position(p, 0) < 1.0 && position(p, 1) > 0.5 &&
                              position(p, 1) < 1.0;
-      if (!in_centre) continue;
-      centre = element(p);
+      if (!in_centre || raised >= 0) continue;
+      raised = p;
       stress(p, XX) += 800;
       stress(p, YY) += 800;
       pressure(p) += 400;
     }
+    ASSERT_GE(raised, 0);
+    for (int p = 1; p < points.count; ++p) ASSERT_DOUBLE_EQ(volume(p), volume(0));
     Kokkos::deep_copy(points.stress_effective, stress);
     Kokkos::deep_copy(points.pressure_liquid, pressure);
     Kokkos::deep_copy(points.material, material);
   }
-  ASSERT_GE(centre, 0);
   averaging.averageMeanStresses(table, points, shapes, active);
   const auto shift2 = hostCopy(averaging.meanStressShifts());
-  const auto position = hostCopy(points.position);
+  const auto element = hostCopy(points.element);
+  int in_cell = 0;
   for (int p = 0; p < points.count; ++p) {
-    const int i = static_cast<int>(std::floor(position(p, 0) / 0.5));
-    const int j = static_cast<int>(std::floor(position(p, 1) / 0.5));
-    const int distance = std::abs(i - 1) + std::abs(j - 1);
-    const Real share = distance == 0 ? 0.5 : distance == 1 ? 0.125 : 0.0;
-    // the total mean's excess: 800 - S 400 = 600; the point's own excess: 600 in the centre
-    const Real own_excess = distance == 0 ? 600.0 : 0.0;
-    EXPECT_NEAR(shift2(p, 0), share * 600 - own_excess, 1e-9) << "point " << p;
-    EXPECT_NEAR(shift2(p, 1), share * 400 - (distance == 0 ? 400.0 : 0.0), 1e-9) << "point " << p;
+    const bool same_cell = element(p) == element(raised);
+    in_cell += same_cell ? 1 : 0;
+    // the total mean's excess: 800 - S 400 = 600 at the raised point, 150 its cell's average
+    const Real own_excess = p == raised ? 600.0 : 0.0;
+    EXPECT_NEAR(shift2(p, 0), (same_cell ? 150.0 : 0.0) - own_excess, 1e-9) << "point " << p;
+    EXPECT_NEAR(shift2(p, 1), (same_cell ? 100.0 : 0.0) - (p == raised ? 400.0 : 0.0), 1e-9)
+        << "point " << p;
   }
+  EXPECT_EQ(in_cell, 4);
 }
 
 /// The P2G's forces with the shifts equal those of points whose stress and p_L carry them:

@@ -26,14 +26,16 @@
 /// order in d p_L / K_L.
 ///
 /// Conjugate mean stress (`Conjugate Mean Stress`, element averaging of d eps_vol): the strain
-/// a point is given, eps_p + (F a)_e(p) - a_p with a the volumetric part and (F a)_e the
-/// (filtered) average of its element, does virtual work sum_p V_p s_p : d eps_p with the
-/// in-plane mean stress m_p = (s_xx + s_yy) / 2 replaced by (F m)_e(p): the same averaging
-/// of m with weight V (F is self-adjoint in the weights V, W F = (W F)^T). So the nodal forces
-/// take the mixture's total mean stress m' - S_L p_L and the liquid's p_L (the conjugate of
-/// the averaged div v_L) as their element's (filtered) averages: a symmetric stiffness for any
-/// tangent, where the point's own mean stress left the filter's coupling of a cracked cell to
-/// an intact neighbour one-sided.
+/// a point is given, eps_p + (A a)_e(p) - a_p with a the volumetric part and (A a)_e the
+/// average of its element (or patch), does virtual work sum_p V_p s_p : d eps_p with the
+/// in-plane mean stress m_p = (s_xx + s_yy) / 2 replaced by (A m)_e(p): the same average of m
+/// with weight V (A is self-adjoint in the weights V). So the nodal forces take the mixture's
+/// total mean stress m' - S_L p_L and the liquid's p_L (the conjugate of the averaged div v_L)
+/// as their element's averages: B-bar, a symmetric stiffness for any tangent, where the
+/// point's own mean stress made the coupling of neighbouring cells one-sided and a sliding
+/// body grew the cells' checkerboard. Never with the checkerboard filter F (checkDeck): F
+/// maps the checkerboard to zero, and forces from F A m would leave a checkerboard of m and
+/// p_L without any force against it (a free mode; V1's p_L error x2.3, cell to cell).
 
 #include "argine/core/Types.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
@@ -72,7 +74,7 @@ class VolumetricAveraging {
   /// Whether some material's forces take the conjugate mean stress.
   bool conjugatesMeanStress() const { return conjugate_; }
   /// Per point the shifts (x: of the mixture's total mean stress, y: of p_L in the liquid's
-  /// force) that give the forces the element's (filtered) averages instead of the point's own
+  /// force) that give the forces the element's (or patch's) averages instead of the point's own
   /// values (file comment); zero where the point's material does not ask for it. Fills
   /// meanStressShifts().
   void averageMeanStresses(const MaterialTable& table, const MaterialPoints& points,
