@@ -9,6 +9,7 @@
 #include "argine/mesh/Mesh.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/AveragingPatches.hpp"
+#include "argine/physics/BishopStress.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointValueAveraging.hpp"
@@ -98,7 +99,7 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);
   // element averages only, never filtered (checkDeck: the filter's null space would be free)
-  if (conjugate_) mean_stresses_.allocateSums(2, element_rows, 0);
+  if (conjugate_) mean_stresses_.allocateSums(kMeanChannels, element_rows, 0);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
@@ -317,28 +318,31 @@ void VolumetricAveraging::averageMeanStresses(const MaterialTable& table,
   const auto weight_p = mean_stresses_.weight_p;
   const auto mode_pc = mean_stresses_.mode_pc;
   const auto shift_p = mean_shift_p_;
-  // channel 0: the mixture's total in-plane mean stress, Bishop chi = S_L (4.5) as in the P2G;
-  // channel 1: p_L, whose B^T p_L V is the liquid's force (4.43). Weight V, as d eps_vol's.
+  // kMixtureMean: the total in-plane mean stress, Bishop chi = S_L (4.5) as in the P2G;
+  // kLiquidPressure: p_L, whose B^T p_L V is the liquid's force (4.43). Weight V, as d eps_vol's.
   Kokkos::parallel_for(
       "averaging_mean_stress_in", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
         const PointMaterial& material = materials_m(pts.material(p));
         const bool wet = carriesLiquid(material.phase);
         const int mode = material.locking.conjugate_mean_stress ? kAverageElement : kNone;
-        const Real bishop = wet ? pts.saturation(p) * pts.pressure_liquid(p) : Real(0);
+        const Real bishop =
+            wet ? bishopPorePressure(pts.saturation(p), pts.pressure_liquid(p)) : Real(0);
         weight_p(p) = pts.volume(p);
-        mode_pc(p, 0) = mode;
-        value_pc(p, 0) = (pts.stress_effective(p, XX) + pts.stress_effective(p, YY)) / 2 - bishop;
-        mode_pc(p, 1) = wet ? mode : kNone;
-        value_pc(p, 1) = wet ? pts.pressure_liquid(p) : Real(0);
-        shift_p(p, 0) = value_pc(p, 0);  // the point's own, until the averages come
-        shift_p(p, 1) = value_pc(p, 1);
+        mode_pc(p, kMixtureMean) = mode;
+        value_pc(p, kMixtureMean) =
+            (pts.stress_effective(p, XX) + pts.stress_effective(p, YY)) / 2 - bishop;
+        mode_pc(p, kLiquidPressure) = wet ? mode : kNone;
+        value_pc(p, kLiquidPressure) = wet ? pts.pressure_liquid(p) : Real(0);
+        // the point's own, until the averages come
+        shift_p(p, kMixtureMean) = value_pc(p, kMixtureMean);
+        shift_p(p, kLiquidPressure) = value_pc(p, kLiquidPressure);
       });
   averagePointValues(points, shapes, active, mean_stresses_, exchange_);
   Kokkos::parallel_for(
       "averaging_mean_stress_out", Kokkos::RangePolicy<ExecSpace>(0, count),
       KOKKOS_LAMBDA(const int p) {
-        for (int c = 0; c < 2; ++c)
+        for (int c = 0; c < kMeanChannels; ++c)
           shift_p(p, c) = mode_pc(p, c) == kNone || pts.element(p) < 0
                               ? Real(0)
                               : value_pc(p, c) - shift_p(p, c);

@@ -21,6 +21,7 @@
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/mesh/GridShapes.hpp"
+#include "argine/physics/BishopStress.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
@@ -119,7 +120,7 @@ KOKKOS_INLINE_FUNCTION void mapGridPointToGrid(const TensorShape& t, int row, bo
   const Real volume = v.volume_p(p);
   const Real m_solid = v.mass_solid_p(p);
   const Real m_liquid = wet ? v.mass_liquid_p(p) : 0;
-  const Real bishop = wet ? v.saturation_p(p) * v.pressure_p(p) : 0;  // chi = S_L (4.5)
+  const Real bishop = wet ? bishopPorePressure(v.saturation_p(p), v.pressure_p(p)) : 0;
   // the stress row (XX, YY, ZZ, XY) less chi p_L on the diagonal, one load and one
   // subtraction (XY - +0 is XY to the bit): (sxx, syy, -, sxy)
   static_assert(XX == 0 && YY == 1 && XY == 3 && kStressComponents == kLanes,

@@ -7,6 +7,7 @@
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
+#include "argine/physics/BishopStress.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
@@ -277,7 +278,8 @@ KOKKOS_INLINE_FUNCTION void mapPointToGrid(const At& at, bool wet, Real gravity,
   const T m_solid = load<T>(v.mass_solid_p, p);
   const T m_liquid = wet ? load<T>(v.mass_liquid_p, p) : splat<T>(0);
   // Bishop total stress, chi = S_L (4.5), p_L compression positive.
-  const T bishop = wet ? load<T>(v.saturation_p, p) * load<T>(v.pressure_p, p) : splat<T>(0);
+  const T bishop =
+      wet ? bishopPorePressure(load<T>(v.saturation_p, p), load<T>(v.pressure_p, p)) : splat<T>(0);
   T stress[kStressComponents];
   loadComponents(v.stress_p, p, stress);
   T sxx = stress[XX] - bishop, syy = stress[YY] - bishop;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "argine/core/Lanes.hpp"
+#include "argine/physics/BishopStress.hpp"
 #include "argine/physics/LiquidState.hpp"
 
 namespace argine {
@@ -41,6 +43,21 @@ PointMaterial linearRetentionMaterial() {
 /// S_L rho_L at p_L: the content a pressure stores (4.13 and the SWRC).
 Real contentAt(const PointMaterial& m, Real pressure) {
   return saturation(m.retention, suctionOfPressure(pressure)) * liquidDensity(m.liquid, pressure);
+}
+
+TEST(BishopStress, PorePressureTermIsSaturationTimesPressureForPointsAndLanes) {
+  // (4.5), chi = S_L: 0.8 x -10 kPa suction-side p_L = -8 kPa; saturated: p_L itself
+  EXPECT_DOUBLE_EQ(bishopPorePressure(0.8, -10000.0), -8000.0);
+  EXPECT_DOUBLE_EQ(bishopPorePressure(1.0, 2500.0), 2500.0);
+  EXPECT_DOUBLE_EQ(bishopPorePressure(0.0, 2500.0), 0.0);
+  const Lanes s = {0.8, 1.0, 0.5, 0.0}, p = {-10000, 2500, 400, 2500};
+  const Lanes term = bishopPorePressure(s, p);
+  Real lane[kLanes];
+  std::memcpy(lane, &term, sizeof lane);
+  EXPECT_DOUBLE_EQ(lane[0], -8000.0);
+  EXPECT_DOUBLE_EQ(lane[1], 2500.0);
+  EXPECT_DOUBLE_EQ(lane[2], 200.0);
+  EXPECT_DOUBLE_EQ(lane[3], 0.0);
 }
 
 TEST(LiquidState, SaturatedPressureIsTheInverseOf413) {

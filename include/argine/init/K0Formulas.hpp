@@ -13,6 +13,7 @@
 
 #include "argine/core/Types.hpp"
 #include "argine/materials/KernelMath.hpp"
+#include "argine/physics/BishopStress.hpp"
 
 namespace argine {
 
@@ -36,7 +37,7 @@ KOKKOS_INLINE_FUNCTION Real unitWeight(Real porosity, Real solid_density, Real s
 /// Bishop's effective vertical stress (4.5, chi = S_L): sigma' = sigma + S_L p_L (Pa).
 KOKKOS_INLINE_FUNCTION Real bishopEffectiveStress(Real total_stress, Real saturation,
                                                   Real pressure) {
-  return total_stress + saturation * pressure;
+  return total_stress + bishopPorePressure(saturation, pressure);
 }
 
 }  // namespace argine

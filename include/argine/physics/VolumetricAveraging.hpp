@@ -118,7 +118,11 @@ class VolumetricAveraging {
   AveragingScratch pressure_increments_;        ///< d p_L (one channel)
   Kokkos::View<Real*, MemSpace> old_pressure_;  ///< p_L before the step
   bool conjugate_ = false;
-  AveragingScratch mean_stresses_;  ///< the mixture's mean stress and p_L (two channels)
+  /// The channels of mean_stresses_, in the order of MeanStressShifts' columns: the mixture's
+  /// total in-plane mean stress and p_L.
+  enum MeanChannel : int { kMixtureMean = 0, kLiquidPressure, kMeanChannels };
+  static_assert(kMeanChannels == MeanStressShifts::static_extent(1));
+  AveragingScratch mean_stresses_;  ///< the mixture's mean stress and p_L (MeanChannel)
   MeanStressShifts mean_shift_p_;   ///< averageMeanStresses' shifts
 };
 
