@@ -20,8 +20,11 @@ Each run's deck is a copy beside DECK (relative file keys keep working, removed 
 with the element size, the last stage's Material Changes and Duration, a Factor Of Safety
 section (Bishop, critical circle at every output, unless the deck has one) and the output
 name changed. --ranks R runs each deck on R MPI ranks (mpiexec; the same bits as one rank,
-doc/parallel.md). Results in results/strength_sensitivity/<scene>_h<size>_f<factor>/; a run
-whose log says it finished is not repeated. Needs build/argine (./scripts/build.sh).
+doc/parallel.md). Results in results/strength_sensitivity/<scene>_h<size>_f<factor>/, with
+the deck that made them (<name>.deck.yaml). A run whose log says it finished is not repeated
+while its kept deck is the one the command would write now; a run whose deck changed is made
+again, and one made before decks were kept is reused with a warning (its deck unchecked).
+Needs build/argine (./scripts/build.sh).
 """
 
 import argparse
@@ -58,8 +61,8 @@ def strength_in_last_stage(deck):
     return out
 
 
-def write_copy(path, h, f, duration, name):
-    """The deck at element size h with strength factor f in its last stage (the text of the
+def deck_text(path, h, f, duration, name):
+    """The text of the deck at element size h with strength factor f in its last stage (the
     values: c' to 6 and phi' to 10 significant digits)."""
     with open(path) as handle:
         deck = yaml.safe_load(handle)
@@ -77,10 +80,23 @@ def write_copy(path, h, f, duration, name):
         last["Duration (s)"] = duration
     argine.setdefault("Factor Of Safety", {"Minimum Depth (m)": 0.5, "Slice Table": False})
     argine["Output"]["Name"] = name
-    copy = os.path.join(os.path.dirname(path), f".strength_{name}.yaml")
-    with open(copy, "w") as handle:
-        yaml.safe_dump(deck, handle, sort_keys=False, default_flow_style=None, width=1000)
-    return copy
+    return yaml.safe_dump(deck, sort_keys=False, default_flow_style=None, width=1000)
+
+
+def reusable(directory, name, text):
+    """Whether the finished run in `directory` was made from the deck `text` (file comment)."""
+    log = os.path.join(directory, name + ".log")
+    if not (os.path.exists(log) and "simulated in" in open(log).read()):
+        return False
+    kept = os.path.join(directory, name + ".deck.yaml")
+    if not os.path.exists(kept):
+        print(f"{name}: made before decks were kept, reused unchecked", file=sys.stderr)
+        return True
+    with open(kept) as handle:
+        if handle.read() == text:
+            return True
+    print(f"{name}: its deck changed since, made again", file=sys.stderr)
+    return False
 
 
 def run(argine, path, h, f, duration, out, existing=False, ranks=1):
@@ -88,10 +104,15 @@ def run(argine, path, h, f, duration, out, existing=False, ranks=1):
     name = f"{scene}_h{h:g}_f{f:g}"
     directory = os.path.join(out, name)
     log = os.path.join(directory, name + ".log")
-    if existing or (os.path.exists(log) and "simulated in" in open(log).read()):
+    text = deck_text(path, h, f, duration, name)
+    if existing or reusable(directory, name, text):
         return h, f, directory, name
     os.makedirs(directory, exist_ok=True)
-    copy = write_copy(path, h, f, duration, name)
+    copy = os.path.join(os.path.dirname(path), f".strength_{name}.yaml")
+    with open(copy, "w") as handle:
+        handle.write(text)
+    with open(os.path.join(directory, name + ".deck.yaml"), "w") as handle:
+        handle.write(text)
     try:
         with open(log, "w") as handle:
             launcher = ["mpiexec", "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []
