@@ -935,6 +935,26 @@ ListSchema stageKeys() {
                 .atMost(1)
                 .byDefault(0.0)
                 .when("Velocity Transfer", {"FLIP", kTransferByShapeFunctions}));
+  stage.add(KeySpec::real("Solid PIC Rate (1/s)", "1/s",
+                          "rate at which the solid point velocities relax towards the grid's: "
+                          "each step of dt takes a share 1 - exp(-rate dt) of the grid's "
+                          "update (PIC's with FLIP, APIC's velocity and C_p with APIC) and the "
+                          "rest from FLIP's v_p + dt sum N a_i, so the velocity the grid cannot "
+                          "see decays as exp(-rate t) whatever the step; omitted: FLIP takes "
+                          "Solid PIC Fraction per step, APIC the grid's update in full (an "
+                          "infinite rate), whose loss at every transfer makes a slide's run-out "
+                          "depend on the step (doc/theory.md Sec. 3.11)")
+                .above(0)
+                .when("Velocity Transfer", {"FLIP", "APIC", kTransferByShapeFunctions}));
+  stage.add(KeySpec::real("Liquid PIC Rate (1/s)", "1/s",
+                          "the liquid's as Solid PIC Rate: with FLIP Liquid PIC Fraction = 1 - "
+                          "exp(-rate dt) each step (the relative velocity's grid share), with "
+                          "APIC the share of APIC's liquid update, the rest FLIP's; omitted: "
+                          "Liquid PIC Fraction (FLIP), APIC in full (the liquid, drag-locked to "
+                          "the solid, carries a share of the mixture's momentum and loses it at "
+                          "every transfer as the solid does)")
+                .above(0)
+                .when("Velocity Transfer", {"FLIP", "APIC", kTransferByShapeFunctions}));
   stage.add(KeySpec::real("Liquid PIC Fraction", "-",
                           "share per step of the grid's relative velocity v_L - v_S in the "
                           "liquid point velocities (PIC for the Darcy part); 0: FLIP (the "

@@ -500,6 +500,17 @@ StageSpec parseStage(const DeckSection& stage, const MeshSpec& mesh) {
                            ": use 'XPIC Polynomial: Chebyshev' for more passes");
     spec.xpic.lower_eigenvalue = chebyshev ? stage.real("XPIC Lower Eigenvalue") : 0.0;
   }
+  // (FLIP or APIC: the schema's condition) a share per second or per step, not both
+  for (const char* phase : {"Solid", "Liquid"}) {
+    const std::string rate = std::string(phase) + " PIC Rate (1/s)";
+    const std::string fraction = std::string(phase) + " PIC Fraction";
+    if (stage.has(rate) && stage.has(fraction))
+      throw InputError(stage.pathOf(rate),
+                       "sets the share per second, '" + fraction + "' per step: give one of them");
+  }
+  if (stage.has("Solid PIC Rate (1/s)")) spec.solid_pic_rate = stage.real("Solid PIC Rate (1/s)");
+  if (stage.has("Liquid PIC Rate (1/s)"))
+    spec.liquid_pic_rate = stage.real("Liquid PIC Rate (1/s)");
   spec.solid_pic_fraction = stage.real("Solid PIC Fraction");
   spec.liquid_pic_fraction = stage.real("Liquid PIC Fraction");
   spec.hold_liquid_pressure =

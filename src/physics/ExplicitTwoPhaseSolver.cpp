@@ -138,7 +138,8 @@ void ExplicitTwoPhaseSolver::beginStage(const StageSpec& stage) {
   transfer_.scheme = stage.transfer;
   transfer_.blend = stage.transfer == TransferScheme::Xpic  // the filtered v* in full
                         ? VelocityBlend{1, 1}
-                        : VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction};
+                        : VelocityBlend{stage.solid_pic_fraction, stage.liquid_pic_fraction,
+                                        stage.solid_pic_rate, stage.liquid_pic_rate};
   transfer_.xpic = stage.xpic;
   dropPreparedTimeStep();
   momentum_.fixed_skeleton = stage.solver == SolverKind::FixedSkeleton;

@@ -232,6 +232,18 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
   if constexpr (kFromGrid) {
     v_solid[0] = grid_velocity[0];
     v_solid[1] = grid_velocity[1];
+    if constexpr (kAffine)
+      if (pic_solid < 1 || (wet && pic_liquid < 1)) {
+        // a FLIP share (VelocityBlend): v_APIC + (1 - alpha) (v_p + dt sum N a_i - v_APIC),
+        // the accelerations of both phases (block 0)
+        for (int a = 0; a < kGridStencilNodes; ++a)
+          acceleration +=
+              broadcast(s.N[a]) * loadBlock(&values_i(s.node[a], kReadAccelerationSolid));
+        Real flip[kDim];
+        loadComponents(v.velocity_solid_p, p, flip);
+        for (int d = 0; d < kDim; ++d)
+          v_solid[d] += (1 - pic_solid) * (flip[d] + dt * acceleration[d] - v_solid[d]);
+      }
   } else {
     // FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (TwoPhaseTransfer.hpp)
     loadComponents(v.velocity_solid_p, p, v_solid);
@@ -256,6 +268,12 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
         const Real cl[kAffineComponents] = {gradient_x[2], gradient_y[2], gradient_x[3],
                                             gradient_y[3]};
         storeComponents(v.affine_liquid_p, p, cl);
+        if (pic_liquid < 1) {  // a FLIP share, as the solid's
+          Real flip[kDim];
+          loadComponents(v.velocity_liquid_p, p, flip);
+          for (int d = 0; d < kDim; ++d)
+            v_liquid[d] += (1 - pic_liquid) * (flip[d] + dt * acceleration[kDim + d] - v_liquid[d]);
+        }
       }
     } else {
       // the relative velocity w_p = v_L - v_S relaxes towards the grid's sum N w_i; with

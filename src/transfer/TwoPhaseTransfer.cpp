@@ -457,6 +457,23 @@ KOKKOS_INLINE_FUNCTION void affineVelocityFromGrid(const At& at, const Values& v
   }
 }
 
+/// A FLIP share in APIC's update of one phase (VelocityBlend): v <- v_APIC + (1 - alpha)
+/// (v_p + dt sum N a_i - v_APIC), v_p in `velocity_p`, a_i in `slot` (x, y) of `values_i`,
+/// alpha = `grid_share`.
+template <int kNodes, class At, class Values, class Velocities, class T>
+KOKKOS_INLINE_FUNCTION void addFlipShare(const At& at, const Values& values_i, int slot,
+                                         const Velocities& velocity_p, int p, Real dt,
+                                         Real grid_share, T v[kDim]) {
+  T flip[kDim], acceleration[kDim] = {};
+  loadComponents(velocity_p, p, flip);
+  for (int a = 0; a < kNodes; ++a) {
+    const T N = at.value(a);
+    for (int d = 0; d < kDim; ++d) acceleration[d] += N * at.nodal(values_i, a, slot + d);
+  }
+  for (int d = 0; d < kDim; ++d)
+    v[d] = v[d] + (1 - grid_share) * (flip[d] + dt * acceleration[d] - v[d]);
+}
+
 /// The velocity update of point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located
 /// and all `wet` or all dry, from the nodal values of readVelocityUpdateValues, and their
 /// momenta added to the nodes (the remap; slots 4-7, one block). The kinetic energies and
@@ -477,6 +494,9 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
   if constexpr (kAffine) {
     affineVelocityFromGrid<kNodes>(at, values_i, kReadVelocitySolid, v_solid, cs);
     storeComponents(v.affine_solid_p, p, cs);
+    if (pic_solid < 1)
+      addFlipShare<kNodes>(at, values_i, kReadAccelerationSolid, v.velocity_solid_p, p, dt,
+                           pic_solid, v_solid);
     xp[0] = load<T>(v.position_p, p, 0);
     xp[1] = load<T>(v.position_p, p, 1);
     for (int a = 0; a < kNodes; ++a) nodeOffset(at, v.coordinates_i, a, xp, offset[a]);
@@ -521,6 +541,9 @@ KOKKOS_INLINE_FUNCTION void updatePointVelocityAt(const At& at, bool wet, Real d
     if constexpr (kAffine) {
       affineVelocityFromGrid<kNodes>(at, values_i, kReadVelocityLiquid, v_liquid, cl);
       storeComponents(v.affine_liquid_p, p, cl);
+      if (pic_liquid < 1)
+        addFlipShare<kNodes>(at, values_i, kReadAccelerationLiquid, v.velocity_liquid_p, p, dt,
+                             pic_liquid, v_liquid);
     } else if constexpr (kFromGrid) {
       interpolateGridVelocity<kNodes>(at, values_i, kReadVelocityLiquid, v_liquid);
     } else {
@@ -587,7 +610,8 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(
                         transfer.node_coordinates};
   readVelocityUpdateValues(active, grid, records);
   const auto values_i = records.values_i;
-  const Real pic_solid = transfer.blend.solid, pic_liquid = transfer.blend.liquid;
+  const VelocityBlend shares = gridShares(kScheme, transfer.blend, dt);
+  const Real pic_solid = shares.solid, pic_liquid = shares.liquid;
   const int count = points.count;
   constexpr int kNodes = Family::kNodes;
   // One call per kLanes points (lanesMapTogether), else point by point: the same bits. The

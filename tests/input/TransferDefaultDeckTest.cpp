@@ -63,6 +63,39 @@ TEST(TransferDefault, PicFractionsNeedFlip) {
       "Stages/load/Liquid PIC Fraction", "Velocity Transfer");
 }
 
+TEST(TransferDefault, APicRateRelaxesFlipOrApicAndExcludesTheFraction) {
+  const std::string gimp = withShapes(kBaseDeck, "GIMP");  // APIC by default
+  EXPECT_EQ(parseText(gimp).stages[0].solid_pic_rate, 0.0);
+  const Deck apic = parseText(withStageKey(gimp, "Solid PIC Rate (1/s): 40"));
+  EXPECT_EQ(apic.stages[0].transfer, TransferScheme::Apic);
+  EXPECT_EQ(apic.stages[0].solid_pic_rate, 40.0);
+  EXPECT_EQ(parseText(withStageKey(kBaseDeck, "Solid PIC Rate (1/s): 25")).stages[0].solid_pic_rate,
+            25.0);  // FLIP on linear shapes
+  expectInputError(
+      [&] {
+        parseText(withStageKey(withStageKey(kBaseDeck, "Solid PIC Rate (1/s): 25"),
+                               "Solid PIC Fraction: 0.1"));
+      },
+      "Stages/load/Solid PIC Rate (1/s)", "give one of them");
+  const Deck liquid = parseText(withStageKey(gimp, "Liquid PIC Rate (1/s): 30"));
+  EXPECT_EQ(liquid.stages[0].liquid_pic_rate, 30.0);
+  EXPECT_EQ(liquid.stages[0].solid_pic_rate, 0.0);
+  expectInputError(
+      [&] {
+        parseText(withStageKey(withStageKey(kBaseDeck, "Liquid PIC Rate (1/s): 25"),
+                               "Liquid PIC Fraction: 0.1"));
+      },
+      "Stages/load/Liquid PIC Rate (1/s)", "'Liquid PIC Fraction' per step");
+  expectInputError([&] { parseText(withStageKey(kBaseDeck, "Solid PIC Rate (1/s): 0")); },
+                   "Stages/load/Solid PIC Rate (1/s)", "0");
+  expectInputError(
+      [&] {
+        parseText(withStageKey(withStageKey(gimp, "Velocity Transfer: TPIC"),
+                               "Solid PIC Rate (1/s): 25"));
+      },
+      "Stages/load/Solid PIC Rate (1/s)", "Velocity Transfer");
+}
+
 TEST(TransferDefault, XpicTakesItsOrderAndNoPicFraction) {
   const std::string xpic = withStageKey(kBaseDeck, "Velocity Transfer: XPIC");
   const Deck plain = parseText(xpic);

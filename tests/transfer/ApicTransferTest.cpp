@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "TestScenes.hpp"
@@ -31,9 +32,10 @@ struct Scene {
   ActiveNodes active;
 };
 
-Scene makeScene(ElementType type, unsigned seed) {
+Scene makeScene(Mesh mesh, unsigned seed) {
   Scene s;
-  s.mesh = test::rectangleMesh(3, 2, 1.5, 1.0, type, 10.0, -3.0);  // away from the origin
+  const ElementType type = mesh.type;
+  s.mesh = std::move(mesh);
   s.points = test::seedUniform(s.mesh);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<Real> u(-1, 1);
@@ -80,6 +82,10 @@ Scene makeScene(ElementType type, unsigned seed) {
   s.active = ActiveNodes(s.mesh.numNodes());
   s.active.rebuild(s.mesh, s.points);
   return s;
+}
+
+Scene makeScene(ElementType type, unsigned seed) {
+  return makeScene(test::rectangleMesh(3, 2, 1.5, 1.0, type, 10.0, -3.0), seed);  // off the origin
 }
 
 /// Random nodal velocities of both phases (the grid's v~ = v + dt a with a = 0).
@@ -284,6 +290,131 @@ TEST_P(ApicOnShape, TpicKeepsLinearMomentumAndTakesTheGridVelocity) {
     EXPECT_NEAR(r.liquid_after.linear[d], r.liquid_before.linear[d], 1e-14 * r.liquid_scale);
   }
 }
+
+/// Random values in [-1, 1) for a (count x kDim) View.
+template <class View>
+void randomise(const View& field, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<Real> u(-1, 1);
+  auto host = Kokkos::create_mirror_view(field);
+  for (int i = 0; i < static_cast<int>(host.extent(0)); ++i)
+    for (int d = 0; d < kDim; ++d) host(i, d) = u(rng);
+  Kokkos::deep_copy(field, host);
+}
+
+/// The point velocities and C_p that `transfer` makes of the same random point velocities,
+/// grid velocities v~_i and accelerations a_i, in a step of dt.
+struct PointUpdate {
+  Kokkos::View<Real*[kDim], Kokkos::HostSpace> solid, liquid;
+  Kokkos::View<Real*[kAffineComponents], Kokkos::HostSpace> affine_solid, affine_liquid;
+};
+
+PointUpdate updateFromRandomState(Scene& s, const TransferSettings& transfer, Real dt) {
+  randomise(s.points.velocity_solid, 21);
+  randomise(s.points.velocity_liquid, 22);
+  NodeRecords records;
+  mapPointsToGrid(s.points, s.shapes, liquidFlags(), 0.0, transfer, s.active, records, s.grid);
+  randomise(s.grid.velocity_solid_i, 23);
+  randomise(s.grid.velocity_liquid_i, 24);
+  randomise(s.grid.acceleration_solid_i, 25);
+  randomise(s.grid.acceleration_liquid_i, 26);
+  updatePointVelocitiesAndMapMomenta(s.shapes, liquidFlags(), s.active, dt, transfer, s.points,
+                                     records, s.grid);
+  return {hostCopy(s.points.velocity_solid), hostCopy(s.points.velocity_liquid),
+          hostCopy(s.points.affine_velocity_solid), hostCopy(s.points.affine_velocity_liquid)};
+}
+
+class AffineFlipOnMesh : public ::testing::TestWithParam<int> {
+ protected:
+  static Mesh mesh() {
+    switch (GetParam()) {
+      case 0:
+        return test::rectangleMesh(3, 2, 1.5, 1.0, ElementType::Tri3, 10.0, -3.0);
+      case 1:
+        return test::rectangleMesh(3, 2, 1.5, 1.0, ElementType::Quad4, 10.0, -3.0);
+      default:
+        return test::gridMesh(4, 3, 2.0, 1.5, ShapeFamily::Gimp, 10.0, -3.0);
+    }
+  }
+};
+
+TEST_P(AffineFlipOnMesh, RatesBlendApicWithFlipByOneMinusExpOfRateTimesStep) {
+  // VelocityBlend: per phase v = v_APIC + (1 - alpha)(v_p + dt sum N a_i - v_APIC), alpha =
+  // 1 - exp(-rate dt); C_p stays APIC's. Checked against the APIC and FLIP updates of the
+  // same state, each with its own kernel; a phase without a rate is APIC's.
+  const Real dt = 2e-3;
+  const Mesh reference = mesh();
+  Scene a = makeScene(reference, 5), f = makeScene(reference, 5);
+  const PointUpdate apic =
+      updateFromRandomState(a, TransferSettings{TransferScheme::Apic, {}, a.mesh.coordinates}, dt);
+  const PointUpdate flip =
+      updateFromRandomState(f, TransferSettings{TransferScheme::Flip, {}, f.mesh.coordinates}, dt);
+  const auto material = hostCopy(a.points.material);
+  struct Case {
+    Real solid_rate, liquid_rate;
+  };
+  for (const Case c : {Case{150, 0}, Case{0, 40}, Case{150, 40}}) {
+    // alpha = 1 - exp(-0.3) = 0.2591818 (150/s), 1 - exp(-0.08) = 0.0768837 (40/s); 1: APIC
+    const Real alpha_s = c.solid_rate > 0 ? 1 - std::exp(-c.solid_rate * dt) : 1;
+    const Real alpha_l = c.liquid_rate > 0 ? 1 - std::exp(-c.liquid_rate * dt) : 1;
+    VelocityBlend blend;
+    blend.solid_rate = c.solid_rate;
+    blend.liquid_rate = c.liquid_rate;
+    Scene r = makeScene(reference, 5);
+    const PointUpdate both = updateFromRandomState(
+        r, TransferSettings{TransferScheme::Apic, blend, r.mesh.coordinates}, dt);
+    Real moved_solid = 0, moved_liquid = 0;  // the FLIP share must matter: |v_FLIP - v_APIC|
+    for (int p = 0; p < a.points.count; ++p) {
+      for (int d = 0; d < kDim; ++d) {
+        EXPECT_NEAR(both.solid(p, d), alpha_s * apic.solid(p, d) + (1 - alpha_s) * flip.solid(p, d),
+                    1e-13)
+            << "point " << p << " rates " << c.solid_rate << " " << c.liquid_rate;
+        moved_solid += std::abs(flip.solid(p, d) - apic.solid(p, d));
+        if (material(p) == 0) {
+          EXPECT_NEAR(both.liquid(p, d),
+                      alpha_l * apic.liquid(p, d) + (1 - alpha_l) * flip.liquid(p, d), 1e-13)
+              << "point " << p << " rates " << c.solid_rate << " " << c.liquid_rate;
+          moved_liquid += std::abs(flip.liquid(p, d) - apic.liquid(p, d));
+        }
+      }
+      for (int k = 0; k < kAffineComponents; ++k) {
+        EXPECT_EQ(both.affine_solid(p, k), apic.affine_solid(p, k)) << "point " << p;
+        if (material(p) == 0) {
+          EXPECT_EQ(both.affine_liquid(p, k), apic.affine_liquid(p, k)) << "point " << p;
+        }
+      }
+    }
+    EXPECT_GT(moved_solid, 0.1 * a.points.count);
+    EXPECT_GT(moved_liquid, 0.05 * a.points.count);
+  }
+}
+
+TEST(GridShares, AreOneMinusExpOfRateTimesStepOrThePerStepShares) {
+  const VelocityBlend per_step{0.05, 0.2};
+  EXPECT_EQ(gridShares(TransferScheme::Flip, per_step, 1e-3).solid, 0.05);
+  EXPECT_EQ(gridShares(TransferScheme::Flip, per_step, 1e-3).liquid, 0.2);
+  EXPECT_EQ(gridShares(TransferScheme::Apic, per_step, 1e-3).solid, 1.0);  // APIC in full
+  EXPECT_EQ(gridShares(TransferScheme::Apic, per_step, 1e-3).liquid, 1.0);
+  VelocityBlend rates;
+  rates.solid_rate = 100;
+  rates.liquid_rate = 10;
+  // 1 - exp(-0.1) = 0.1 - 0.1^2/2 + 0.1^3/6 - 0.1^4/24 + ... = 0.09516258196404048;
+  // 1 - exp(-0.01) = 0.009950166250831947
+  for (const TransferScheme scheme : {TransferScheme::Flip, TransferScheme::Apic}) {
+    EXPECT_NEAR(gridShares(scheme, rates, 1e-3).solid, 0.09516258196404048, 1e-16);
+    EXPECT_NEAR(gridShares(scheme, rates, 1e-3).liquid, 0.009950166250831947, 1e-17);
+  }
+  // two half steps damp as one whole: (1 - a(dt/2))^2 = 1 - a(dt)
+  const Real half = gridShares(TransferScheme::Apic, rates, 5e-4).solid;
+  EXPECT_NEAR((1 - half) * (1 - half), 1 - gridShares(TransferScheme::Apic, rates, 1e-3).solid,
+              1e-15);
+}
+
+std::string meshName(const ::testing::TestParamInfo<int>& info) {
+  return info.param == 0 ? "Tri3" : info.param == 1 ? "Quad4" : "Gimp";
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, AffineFlipOnMesh, ::testing::Values(0, 1, 2), meshName);
 
 INSTANTIATE_TEST_SUITE_P(Shapes, ApicOnShape,
                          ::testing::Values(ElementType::Tri3, ElementType::Quad4),

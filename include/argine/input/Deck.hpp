@@ -294,6 +294,8 @@ struct StageSpec {
   TransferScheme transfer = TransferScheme::Flip;  ///< `Velocity Transfer`
   Real solid_pic_fraction = 0;   ///< FLIP: PIC share of the solid velocity update (VelocityBlend)
   Real liquid_pic_fraction = 0;  ///< FLIP: PIC share of the liquid velocity update
+  Real solid_pic_rate = 0;       ///< FLIP, APIC: (1/s) the solid's grid share per second; 0: none
+  Real liquid_pic_rate = 0;      ///< FLIP, APIC: (1/s) the liquid's grid share per second; 0: none
   /// XPIC: `XPIC Order` m and, with `XPIC Polynomial: Chebyshev`, `XPIC Lower Eigenvalue`
   XpicPolynomial xpic{};
   /// `Liquid Pressure: held` (quasi-static stages): p_L and S_L stay as the stage found them

@@ -75,10 +75,26 @@ constexpr TransferScheme transferForShapes(ShapeFamily shapes) {
 ///                  + alpha_L (v_S,new + sum N (w_i + dt (a_L,i - a_S,i)))
 /// so the liquid follows the solid's own update and only its Darcy part is taken from the
 /// grid: drag-dominated (relaxation time k / (n g)), it has no inertia worth keeping.
+///
+/// A share per step makes the answer depend on the step: n steps remove (1 - alpha)^n of the
+/// grid-invisible velocity, so halving dt at a fixed alpha doubles the damping per second.
+/// A rate (1/s, > 0) fixes the damping per second instead: the share of a step of dt is
+/// alpha = 1 - exp(-rate dt) (gridShares), per phase, for FLIP (the blends above) and, with
+/// APIC's grid velocity and C_p in place of PIC's, for APIC:
+///   APIC:   v <- v_APIC + (1 - alpha) (v + dt sum N a_i - v_APIC),  v_APIC = sum N v~_i
+/// (the affine FLIP of Fei et al. 2021, ACM Trans. Graph. 40(4), with its FLIP share per
+/// second). APIC's own update, v <- v_APIC, loses the velocity beyond the affine field at
+/// every transfer; it is the limit rate -> infinity.
 struct VelocityBlend {
-  Real solid = 0;   ///< alpha_S: PIC share of the solid velocity update
-  Real liquid = 0;  ///< alpha_L: grid share of the liquid's relative velocity update
+  Real solid = 0;        ///< alpha_S: PIC share of the solid velocity update (FLIP, per step)
+  Real liquid = 0;       ///< alpha_L: grid share of the liquid's relative velocity update
+  Real solid_rate = 0;   ///< 1/s; > 0: alpha_S = 1 - exp(-rate dt) each step (FLIP, APIC)
+  Real liquid_rate = 0;  ///< 1/s; > 0: alpha_L = 1 - exp(-rate dt) each step (FLIP, APIC)
 };
+
+/// alpha_S and alpha_L of a step of dt (VelocityBlend): the grid's shares in the point
+/// velocities, PIC's (FLIP, XPIC) or APIC's (APIC, TPIC: 1 unless a rate is set).
+VelocityBlend gridShares(TransferScheme scheme, const VelocityBlend& blend, Real dt);
 
 /// XPIC's filter polynomial (XpicFilter.hpp): order m >= 1 (m - 1 PIC round trips a step; 1
 /// is PIC) and, for the Chebyshev polynomial, the lower end a in (0, 1) of the eigenvalues of
