@@ -66,8 +66,8 @@ struct KineticTotals {
 /// 7.10, 7.11), blended with a PIC update when `transfer.blend` asks for it (VelocityBlend; the
 /// nodal velocities v_i are those of t^k that the drag used, not constrained: a fixed node's zero
 /// solid velocity against its points' FLIP velocity would otherwise feed the difference into
-/// the liquid's relative velocity every step). APIC: v_p = sum N v~_i (the solid's with a FLIP
-/// share when `transfer.blend` sets a rate, VelocityBlend) and C_p = sum v~_i (grad N_i)^T of
+/// the liquid's relative velocity every step). APIC: v_p = sum N v~_i (a phase's with a FLIP
+/// share when `transfer.blend` sets its rate, VelocityBlend) and C_p = sum v~_i (grad N_i)^T of
 /// each phase, v~_i the grid velocities of advanceNodalVelocities (in the
 /// velocity slots of GridFields, conditions imposed). Then the P2G of the updated momenta
 /// sum N M_S v_S and sum N rho_L V v_L (APIC: with C_p (x_i - x_p) added to v_p) into the
