@@ -23,6 +23,7 @@
 #include "argine/mesh/GridShapes.hpp"
 #include "argine/physics/BishopStress.hpp"
 #include "argine/points/MaterialPoints.hpp"
+#include "argine/transfer/FlipShare.hpp"
 #include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
 #include "argine/transfer/TransferScheme.hpp"
@@ -242,7 +243,7 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
         Real flip[kDim];
         loadComponents(v.velocity_solid_p, p, flip);
         for (int d = 0; d < kDim; ++d)
-          v_solid[d] += (1 - pic_solid) * (flip[d] + dt * acceleration[d] - v_solid[d]);
+          v_solid[d] = withFlipShare(v_solid[d], flip[d] + dt * acceleration[d], pic_solid);
       }
   } else {
     // FLIP v_p + dt sum N a_i, blended: + alpha (sum N v_i - v_p) (TwoPhaseTransfer.hpp)
@@ -272,7 +273,8 @@ KOKKOS_INLINE_FUNCTION void updateGridPointVelocity(const TensorShape& t, int ro
           Real flip[kDim];
           loadComponents(v.velocity_liquid_p, p, flip);
           for (int d = 0; d < kDim; ++d)
-            v_liquid[d] += (1 - pic_liquid) * (flip[d] + dt * acceleration[kDim + d] - v_liquid[d]);
+            v_liquid[d] =
+                withFlipShare(v_liquid[d], flip[d] + dt * acceleration[kDim + d], pic_liquid);
         }
       }
     } else {

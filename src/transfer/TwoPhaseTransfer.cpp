@@ -11,6 +11,7 @@
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
+#include "argine/transfer/FlipShare.hpp"
 #include "argine/transfer/GridFields.hpp"
 #include "argine/transfer/NodeRecords.hpp"
 #include "argine/transfer/PointRates.hpp"
@@ -471,7 +472,7 @@ KOKKOS_INLINE_FUNCTION void addFlipShare(const At& at, const Values& values_i, i
     for (int d = 0; d < kDim; ++d) acceleration[d] += N * at.nodal(values_i, a, slot + d);
   }
   for (int d = 0; d < kDim; ++d)
-    v[d] = v[d] + (1 - grid_share) * (flip[d] + dt * acceleration[d] - v[d]);
+    v[d] = withFlipShare(v[d], flip[d] + dt * acceleration[d], grid_share);
 }
 
 /// The velocity update of point p (T = Real) or points p .. p + kLanes - 1 (Lanes), located
