@@ -43,8 +43,19 @@ and, as diagnostics of the moving mass's water (one table per time, not charted)
                      the free boundary (column net_inflow_interior_nodes; L per m), where a
                      conservative balance makes none
   mass p_L           the volume-weighted mean liquid pressure of those points (kPa)
+  crest core swelling  the relative volume change since the start of the points that started
+                     under the crest (x0 < 1.5 m, y0 > 2 m), moved or not (1e-3)
+  of it in its most swollen tenth  the share of that change in the tenth of those points
+                     that swelled most (near 0.1 if it is spread evenly, near 1 if a few bands
+                     or cracks carry it)
+  crest core p_L     the volume-weighted mean liquid pressure of the crest core (kPa): the
+                     suction that its swelling makes strengthens it
 
-and prints them with the change against the next finer resolution and, with three, the observed
+A full section (points that start at x < 0, the levee mirrored about its axis) is measured on
+its right half, the points that start at x >= 0, so its numbers compare with a half section's
+(but for water drawn, which is the whole model's).
+
+It prints them with the change against the next finer resolution and, with three, the observed
 order p (observed_order: log(|q_3 - q_2| / |q_2 - q_1|) / log r for one refinement ratio r,
 Celik et al.'s equation for two, e.g. 0.1, 0.05 and 1/28 m), the Richardson limit and the
 finest value's error bar (error_bar: Roache's grid convergence index where the changes keep
@@ -67,7 +78,9 @@ SURFACE_BIN = 0.1  # the surface: the highest point of each column of this width
 QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
 WATER = ("volume gain (L/m)", "of it near the surface (L/m)", "gain per cell (1e-3)",
          "water drawn (L/m)", "made inside (L/m)",
-         "mass p_L (kPa)")
+         "mass p_L (kPa)", "crest core swelling (1e-3)", "of it in its most swollen tenth",
+         "crest core p_L (kPa)")
+CREST_CORE_DEPTH = 1.0  # the crest core: the points that start at x < 1.5 m within this of y = 3 m
 # the scenes' probes and their positions in the levee_drawdown and levee_rainfall decks
 # (Probes/Points/Position, m)
 PROBE_POSITIONS = {"MP1_crest": (1.6, 2.9), "MP2_slope": (3.75, 1.4), "MP3_toe": (5.8, 0.05)}
@@ -104,6 +117,13 @@ def read_points(path, want=("displ_x", "displ_y", "volume", "pressure_liquid")):
         x0, y0 = f.variables["coordx"][:].copy(), f.variables["coordy"][:].copy()
         time = f.variables["time_whole"][:].copy()
     return time, x0, y0, values
+
+
+def right_half(time, x0, y0, values):
+    """read_points' output for the points that start at x >= 0: a full section's right half,
+    all of a half section."""
+    keep = x0 >= 0.0
+    return time, x0[keep], y0[keep], {n: v[:, keep] for n, v in values.items()}
 
 
 def weighted_percentile(x, w, q):
@@ -169,9 +189,19 @@ def water_of_moving_mass(h, x0, y0, ux, uy, volume, p_liquid, k0, k):
     if crossed.any():
         out["gain per cell (1e-3)"] = 1e3 * float(
             np.mean(gain[crossed] / volume[k0][moved][crossed] / cells[crossed]))
+    core = (x0 < 1.5) & (y0 > CREST_Y - CREST_CORE_DEPTH)
+    if core.any():
+        swelling = volume[k][core] - volume[k0][core]
+        out["crest core swelling (1e-3)"] = 1e3 * float(swelling.sum() / volume[k0][core].sum())
+        if swelling.sum() > 0:
+            tenth = np.sort(swelling)[::-1][:max(1, core.sum() // 10)]
+            out["of it in its most swollen tenth"] = float(tenth.sum() / swelling.sum())
     if p_liquid is not None:
         out["mass p_L (kPa)"] = 1e-3 * float(np.average(p_liquid[k][moved],
                                                          weights=volume[k][moved]))
+        if core.any():
+            out["crest core p_L (kPa)"] = 1e-3 * float(np.average(p_liquid[k][core],
+                                                                   weights=volume[k][core]))
     return out
 
 
@@ -233,7 +263,7 @@ def main():
         path = os.path.join(directory, name + "_points.e")
         if not os.path.exists(path):
             sys.exit(f"no {path}")
-        time, x0, y0, v = read_points(path)
+        time, x0, y0, v = right_half(*read_points(path))
         rows, water = {}, {}
         k0 = int(np.argmin(np.abs(time - args.start)))
         drawn = water_drawn(directory, name, args.start, [args.start + t for t in args.times])

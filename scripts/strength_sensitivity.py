@@ -183,7 +183,7 @@ def main():
         path = os.path.join(directory, name + "_points.e")
         if not os.path.exists(path):
             continue
-        time, x0, y0, v = lc.read_points(path)
+        time, x0, y0, v = lc.right_half(*lc.read_points(path))
         k = int(np.argmin(np.abs(time - (args.start + last))))
         if abs(time[k] - (args.start + last)) > 1e-6:
             continue
