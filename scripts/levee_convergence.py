@@ -119,6 +119,14 @@ def read_points(path, want=("displ_x", "displ_y", "volume", "pressure_liquid")):
     return time, x0, y0, values
 
 
+def output_index(time, t):
+    """The index of the output at time t (s) in `time`; exits if the run has none there."""
+    k = int(np.argmin(np.abs(time - t)))
+    if abs(time[k] - t) > 1e-6:
+        sys.exit(f"no output at t = {t:g} s")
+    return k
+
+
 def right_half(time, x0, y0, values):
     """read_points' output for the points that start at x >= 0: a full section's right half,
     all of a half section."""

@@ -23,13 +23,6 @@ import levee_convergence as lc  # noqa: E402  (the points reader and the "moved"
 TENSION = 3  # plastic_state of a return to the tension cut-off (MohrCoulomb.hpp)
 
 
-def output_index(time, t):
-    k = int(np.argmin(np.abs(time - t)))
-    if abs(time[k] - t) > 1e-6:
-        sys.exit(f"no output at t = {t:g} s")
-    return k
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="+", help="H:DIR:NAME")
@@ -58,7 +51,7 @@ def main():
         v.update(time=time, x0=first_x, y0=first_y)
         size = 0.3 if len(v["x0"]) > 20000 else 1.5
         for i, t in enumerate(args.times + [args.pressure_time]):
-            k = output_index(v["time"], args.start + t)
+            k = lc.output_index(v["time"], args.start + t)
             x = v["x0"] + v["displacement_x"][k]
             y = v["y0"] + v["displacement_y"][k]
             ax = axes[i][j]

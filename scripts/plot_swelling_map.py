@@ -24,13 +24,6 @@ import levee_convergence as lc  # noqa: E402  (the points reader and the crest c
 SWOLLEN = 2e-3  # a point counts as swollen above this volume change since the start
 
 
-def output_index(time, t):
-    k = int(np.argmin(np.abs(time - t)))
-    if abs(time[k] - t) > 1e-6:
-        sys.exit(f"no output at t = {t:g} s")
-    return k
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="+", help="H:DIR:NAME")
@@ -56,10 +49,10 @@ def main():
         h, directory, name = spec.split(":")[:3]
         time, x0, y0, v = lc.right_half(*lc.read_points(
             os.path.join(directory, name + "_points.e"), ("displ_x", "displ_y", "volume")))
-        k0 = output_index(time, args.start)
+        k0 = lc.output_index(time, args.start)
         core = (x0 < 1.5) & (y0 > lc.CREST_Y - lc.CREST_CORE_DEPTH)
         for col, t in enumerate(args.times):
-            k = output_index(time, args.start + t)
+            k = lc.output_index(time, args.start + t)
             change = v["volume"][k] / v["volume"][k0] - 1
             ax = axes[row][col]
             scatter = ax.scatter(x0 + v["displ_x"][k], y0 + v["displ_y"][k], c=change,
