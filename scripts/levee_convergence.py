@@ -127,6 +127,11 @@ def output_index(time, t):
     return k
 
 
+def crest_core(x0, y0):
+    """The points that start under the crest: x0 < 1.5 m, within CREST_CORE_DEPTH of y = 3 m."""
+    return (x0 < 1.5) & (y0 > CREST_Y - CREST_CORE_DEPTH)
+
+
 def right_half(time, x0, y0, values):
     """read_points' output for the points that start at x >= 0: a full section's right half,
     all of a half section."""
@@ -197,7 +202,7 @@ def water_of_moving_mass(h, x0, y0, ux, uy, volume, p_liquid, k0, k):
     if crossed.any():
         out["gain per cell (1e-3)"] = 1e3 * float(
             np.mean(gain[crossed] / volume[k0][moved][crossed] / cells[crossed]))
-    core = (x0 < 1.5) & (y0 > CREST_Y - CREST_CORE_DEPTH)
+    core = crest_core(x0, y0)
     if core.any():
         swelling = volume[k][core] - volume[k0][core]
         out["crest core swelling (1e-3)"] = 1e3 * float(swelling.sum() / volume[k0][core].sum())

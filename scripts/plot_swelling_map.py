@@ -50,7 +50,7 @@ def main():
         time, x0, y0, v = lc.right_half(*lc.read_points(
             os.path.join(directory, name + "_points.e"), ("displ_x", "displ_y", "volume")))
         k0 = lc.output_index(time, args.start)
-        core = (x0 < 1.5) & (y0 > lc.CREST_Y - lc.CREST_CORE_DEPTH)
+        core = lc.crest_core(x0, y0)
         for col, t in enumerate(args.times):
             k = lc.output_index(time, args.start + t)
             change = v["volume"][k] / v["volume"][k0] - 1
