@@ -48,11 +48,15 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
         typename Family::Record scratch;
         const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
         if (shape.node[0] < 0) return;
+        // most points have no loaded node (loads sit on the surface's nodes): they stop here
+        bool loaded = false;
+        for (int a = 0; a < Family::kNodes; ++a)
+          for (int c = 0; c < 2 * kDim; ++c) loaded = loaded || load_i(shape.node[a], c) != 0;
+        if (!loaded) return;
         const PointWeights w = weightsOf(pts, p, liquid_m(pts.material(p)) != 0);
         // the point's share of its nodes' loads, and its outward normal (4.51 interpolated)
         Real share[2 * kDim] = {0, 0, 0, 0};
         Real gradient[kDim] = {0, 0};
-        bool loaded = false;
         for (int a = 0; a < Family::kNodes; ++a) {
           const int i = shape.node[a];
           for (int d = 0; d < kDim; ++d) gradient[d] += shape.value[a] * gradient_i(i, d);
@@ -64,9 +68,7 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
             share[d] += to_mixture * load_i(i, d);
             share[kDim + d] += to_liquid * load_i(i, kDim + d);
           }
-          for (int c = 0; c < 2 * kDim; ++c) loaded = loaded || load_i(i, c) != 0;
         }
-        if (!loaded) return;
         Real normal[kDim];
         outwardNormalOfMassGradient(gradient, normal);
         const Real reach = pointEdgeReach(pts.volume(p));

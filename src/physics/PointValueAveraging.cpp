@@ -78,6 +78,7 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
   auto node_sv = KE::create_scatter_view(node_sums);
   const auto patch_e = s.patch_e;
   const bool patches = patch_e.extent(0) > 0;
+  const bool nodal = s.nodal();  // else no channel reads the point's shapes: not expanded
   Kokkos::parallel_for(
       "averaging_scatter", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
@@ -85,7 +86,7 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
         if (e < 0) return;
         const Real w = weight_p(p);
         typename Family::Record scratch;
-        const auto& shape = Family::of(shapes, p, element_p, local_p, scratch);
+        const auto* shape = nodal ? &Family::of(shapes, p, element_p, local_p, scratch) : nullptr;
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
@@ -99,9 +100,9 @@ void scatterAverageSums(const MaterialPoints& points, const PointShapes& shapes,
           }
           auto sums = node_sv.access();
           for (int a = 0; a < nodes_per_element; ++a) {
-            const int i = shape.node[a];
-            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c, shape.value[a] * wq);
-            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c + 1, shape.value[a] * w);
+            const int i = shape->node[a];
+            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c, shape->value[a] * wq);
+            addToNode<kCompensated>(sums, node_sums, node_lo, i, 2 * c + 1, shape->value[a] * w);
           }
         }
       });
@@ -124,12 +125,13 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
   const int channels = kChannels > 0 ? kChannels : scratch.channels();
   const auto patch_e = scratch.patch_e;
   const bool patches = patch_e.extent(0) > 0;
+  const bool nodal = scratch.nodal();  // else no channel reads the point's shapes
   Kokkos::parallel_for(
       "averaging_gather", Kokkos::RangePolicy<ExecSpace>(0, count), KOKKOS_LAMBDA(const int p) {
         const int e = element_p(p);
         if (e < 0) return;
         typename Family::Record scratch;
-        const auto& shape = Family::of(shapes, p, element_p, local_p, scratch);
+        const auto* shape = nodal ? &Family::of(shapes, p, element_p, local_p, scratch) : nullptr;
         for (int c = 0; c < channels; ++c) {
           const int mode = mode_pc(p, c);
           if (mode == kAverageNone) continue;
@@ -141,8 +143,8 @@ void gatherAverages(const MaterialPoints& points, const PointShapes& shapes,
           Real average = 0;
           for (int a = 0; a < nodes_per_element; ++a) {
             // a node of no weight may have no sums at all (a grid family's stencil corner)
-            if (shape.value[a] == 0) continue;
-            average += shape.value[a] * node_sums(shape.node[a], 2 * c);  // the node's average
+            if (shape->value[a] == 0) continue;
+            average += shape->value[a] * node_sums(shape->node[a], 2 * c);  // the node's average
           }
           value_pc(p, c) = average;
         }

@@ -13,7 +13,8 @@
 /// unsaturated, total head with a seepage face; 2,757 points) from its K0 state, 400 steps;
 /// levee_drawdown@H = the same with `Element Size (m): H` (e.g. @0.05: 44,481 points, the
 /// finest mesh of the convergence study), at least 1.1e6 point updates and 100 steps a
-/// repeat;
+/// repeat; any other deck of inputs/levee_drawdown by its name, with or without @H (e.g.
+/// levee_drawdown_grid_conjugate@0.05: uGIMP, APIC, the run-out study's grid levee), the same way;
 /// block-1e6 = a saturated Mohr-Coulomb block of 500 x 500 quads, 4 points each (1,000,000
 /// points) in a 520 x 520 mesh, 10 steps; any scene of argine_benchmark (BenchmarkScenes.hpp,
 /// ~1e5 points), 50 steps; "schemes" = the Mohr-Coulomb block on each shape family and
@@ -61,15 +62,18 @@ struct Problem {
   int steps = 10;
 };
 
-/// levee_drawdown on the deck's mesh, or with `Element Size (m)` set to element_size (> 0):
-/// the same scene refined as scripts/convergence.sh refines it, for the step's rate per point
-/// at the resolutions of the convergence study (the finest, 0.05 m: 44,481 points). A refined
-/// mesh takes at least 1.1e6 point updates and 100 steps a repeat (fewer steps weigh the set-up
-/// of a repeat, a fresh copy of the points, too much: 24 steps of the 0.05 m mesh read a third
-/// slower per point than 100).
-Problem leveeDrawdown(const std::string& name, Real element_size) {
+/// A levee scene: `deck` (a deck of inputs/levee_drawdown, e.g. levee_drawdown or
+/// levee_drawdown_grid_conjugate) on its own mesh, or with `Element Size (m)` set to
+/// element_size (> 0): the same scene refined as scripts/convergence.sh refines it, for the
+/// step's rate per point at the resolutions of the convergence study (levee_drawdown on
+/// 0.05 m: 44,481 points). Its second stage (the drawdown) from the K0 state. The shipped
+/// levee_drawdown deck on its own mesh keeps 400 steps, so its fingerprint compares across
+/// builds; any other takes at least 1.1e6 point updates and 100 steps a repeat (fewer steps
+/// weigh the set-up of a repeat, a fresh copy of the points, too much: 24 steps of the 0.05 m
+/// mesh read a third slower per point than 100).
+Problem leveeScene(const std::string& name, const std::string& deck_name, Real element_size) {
   Deck deck =
-      readDeck(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/levee_drawdown.yaml");
+      readDeck(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/" + deck_name + ".yaml");
   if (element_size > 0) deck.mesh.generator.element_size = element_size;
   Problem problem;
   problem.name = name;
@@ -79,28 +83,41 @@ Problem leveeDrawdown(const std::string& name, Real element_size) {
   problem.materials = deck.materials;
   problem.stage = deck.stages.at(1);
   applyMaterialChanges(problem.stage.name, problem.stage.material_changes, problem.materials);
-  // the deck's own mesh keeps its 400 steps, so its fingerprint compares across builds
-  problem.steps =
-      element_size > 0 ? std::max(100, static_cast<int>(1.1e6 / problem.points.count)) : 400;
+  problem.steps = element_size == 0 && deck_name == "levee_drawdown"
+                      ? 400
+                      : std::max(100, static_cast<int>(1.1e6 / problem.points.count));
   return problem;
 }
 
 constexpr const char* kLeveeDrawdown = "levee_drawdown";
 
-/// The element size of "levee_drawdown@H" (H in m), 0 for "levee_drawdown" (the deck's mesh);
-/// std::invalid_argument for anything else that starts with levee_drawdown.
-Real leveeElementSize(const std::string& name) {
-  const std::string base = kLeveeDrawdown;
-  if (name == base) return 0;
-  if (name.size() > base.size() + 1 && name[base.size()] == '@') {
-    const std::string text = name.substr(base.size() + 1);
-    char* end = nullptr;
-    const double size = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() + text.size() && size > 0 && std::isfinite(size)) return size;
-  }
-  throw std::invalid_argument("benchmark scene '" + name +
-                              "': expected levee_drawdown or levee_drawdown@H with an element "
-                              "size H > 0 in m, e.g. levee_drawdown@0.05");
+/// A levee scene's name split: "DECK" or "DECK@H" (DECK a deck of inputs/levee_drawdown
+/// without .yaml, H in m; 0 for DECK's own mesh); std::invalid_argument for a deck that is not
+/// there or an H that is not a positive number.
+struct LeveeSceneName {
+  std::string deck;
+  Real element_size = 0;
+};
+
+LeveeSceneName parseLeveeScene(const std::string& name) {
+  const std::size_t at = name.find('@');
+  LeveeSceneName parsed{name.substr(0, at), 0};
+  const std::string expected =
+      "benchmark scene '" + name +
+      "': expected DECK or DECK@H, DECK a deck of inputs/levee_drawdown without .yaml and H an "
+      "element size > 0 in m, e.g. levee_drawdown@0.05 or levee_drawdown_grid_conjugate@0.05";
+  if (parsed.deck.find('/') != std::string::npos ||
+      !std::ifstream(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/" + parsed.deck +
+                     ".yaml"))
+    throw std::invalid_argument(expected);
+  if (at == std::string::npos) return parsed;
+  const std::string text = name.substr(at + 1);
+  char* end = nullptr;
+  const double size = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(size > 0) || !std::isfinite(size))
+    throw std::invalid_argument(expected);
+  parsed.element_size = size;
+  return parsed;
 }
 
 /// A scene of argine_benchmark (BenchmarkScenes.hpp).
@@ -333,10 +350,12 @@ int run(int argc, char** argv) {
   bool ok = true;
   std::vector<ProblemResult> results;
   for (const auto& name : scenes) {
-    Problem problem = name.rfind(kLeveeDrawdown, 0) == 0
-                          ? leveeDrawdown(name, leveeElementSize(name))
-                      : name == "block-1e6" ? millionPointBlock()
-                                            : benchmarkScene(name);
+    Problem problem;
+    if (name.rfind(kLeveeDrawdown, 0) == 0) {
+      const LeveeSceneName levee = parseLeveeScene(name);
+      problem = leveeScene(name, levee.deck, levee.element_size);
+    } else
+      problem = name == "block-1e6" ? millionPointBlock() : benchmarkScene(name);
     if (options.has("steps")) problem.steps = static_cast<int>(options.number("steps", 10));
     results.push_back(runProblem(problem, settings));
     ok = results.back().finite && ok;
