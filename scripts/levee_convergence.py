@@ -26,6 +26,8 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
                      positions (m): the same material on every mesh, where the nearest point
                      lies up to half a point spacing away and elsewhere on each mesh (MP3:
                      2-4 cm apart in y between meshes, in the toe's steep gradient)
+  crest settlement at MP1  -u_y of that material at MP1's position (1.6, 2.9 m), the crest's
+                     edge (m)
 
 and, as diagnostics of the moving mass's water (one table per time, not charted):
 
@@ -85,6 +87,10 @@ CREST_CORE_DEPTH = 1.0  # the crest core: the points that start at x < 1.5 m wit
 # (Probes/Points/Position, m)
 PROBE_POSITIONS = {"MP1_crest": (1.6, 2.9), "MP2_slope": (3.75, 1.4), "MP3_toe": (5.8, 0.05)}
 PROBES = tuple(PROBE_POSITIONS)
+# -u_y of the material at MP1's position: the settlement of the crest's edge, on every mesh
+# the same material (the crest settlement above averages a column at the axis, where the
+# back scarp of a slide that takes the crest's edge lies: a step, not a field, there)
+CREST_PROBE_SETTLEMENT = "crest settlement at MP1"
 
 
 def probe_displacements(directory, name, times):
@@ -170,9 +176,9 @@ def displacement_at(x0, y0, positions):
     triangulation = Delaunay(np.column_stack([x0, y0]))
     where = np.asarray(positions, dtype=float)
 
-    def at(ux, uy):
+    def at(ux, uy, components=False):
         u = LinearNDInterpolator(triangulation, np.column_stack([ux, uy]))(where)
-        return np.hypot(u[:, 0], u[:, 1])
+        return u if components else np.hypot(u[:, 0], u[:, 1])
     return at
 
 
@@ -286,8 +292,10 @@ def main():
             if abs(time[k] - (args.start + t)) > 1e-6:
                 continue  # this run did not reach t
             rows[t] = measure(x0, y0, v["displ_x"][k], v["displ_y"][k], v["volume"][k])
-            rows[t].update({f"probe {p} at position |u|": float(value) for p, value in
-                            zip(PROBES, at_positions(v["displ_x"][k], v["displ_y"][k]))})
+            u = at_positions(v["displ_x"][k], v["displ_y"][k], components=True)
+            rows[t].update({f"probe {p} at position |u|": float(np.hypot(*value))
+                            for p, value in zip(PROBES, u)})
+            rows[t][CREST_PROBE_SETTLEMENT] = float(-u[PROBES.index("MP1_crest")][1])
             water[t] = water_of_moving_mass(float(h), x0, y0, v["displ_x"], v["displ_y"],
                                             v["volume"], v.get("pressure_liquid"), k0, k)
             water[t].update(drawn.get(args.start + t, {}))
@@ -405,7 +413,9 @@ def table(label, runs, times):
         print("|---|" + "---|" * (len(runs) + 4))
         probes = [q for p in PROBES for q in (f"probe {p} |u|", f"probe {p} at position |u|")
                   if any(q in r["rows"].get(t, {}) for r in runs)]
-        for q in list(QUANTITIES) + probes:
+        extra = [q for q in (CREST_PROBE_SETTLEMENT,)
+                 if any(q in r["rows"].get(t, {}) for r in runs)]
+        for q in list(QUANTITIES) + extra + probes:
             values = [r["rows"][t].get(q, math.nan) if t in r["rows"] else math.nan
                       for r in runs]
             changes = [b - a for a, b in zip(values, values[1:])]

@@ -85,6 +85,9 @@ check("probe at position, inside", u[0], math.sqrt(0.545), 1e-12)
 check("probe at position, corner", u[1], math.sqrt(1.25), 1e-12)
 if not math.isnan(u[2]):
     failures.append(f"probe at position outside the points: {u[2]} should be nan")
+u = at(0.1 + 0.2 * gx + 0.3 * gy, -0.4 + 0.1 * gx, components=True)
+check("probe at position, u_x", u[0][0], 0.65, 1e-12)
+check("probe at position, u_y (the settlement's sign)", u[0][1], -0.35, 1e-12)
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
