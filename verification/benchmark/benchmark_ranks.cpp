@@ -62,6 +62,11 @@ struct Problem {
   int steps = 10;
 };
 
+/// The file of a deck of inputs/levee_drawdown, by its name without .yaml.
+std::string leveeDeckPath(const std::string& deck_name) {
+  return std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/" + deck_name + ".yaml";
+}
+
 /// A levee scene: `deck` (a deck of inputs/levee_drawdown, e.g. levee_drawdown or
 /// levee_drawdown_grid_conjugate) on its own mesh, or with `Element Size (m)` set to
 /// element_size (> 0): the same scene refined as scripts/convergence.sh refines it, for the
@@ -72,8 +77,7 @@ struct Problem {
 /// weigh the set-up of a repeat, a fresh copy of the points, too much: 24 steps of the 0.05 m
 /// mesh read a third slower per point than 100).
 Problem leveeScene(const std::string& name, const std::string& deck_name, Real element_size) {
-  Deck deck =
-      readDeck(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/" + deck_name + ".yaml");
+  Deck deck = readDeck(leveeDeckPath(deck_name));
   if (element_size > 0) deck.mesh.generator.element_size = element_size;
   Problem problem;
   problem.name = name;
@@ -106,9 +110,7 @@ LeveeSceneName parseLeveeScene(const std::string& name) {
       "benchmark scene '" + name +
       "': expected DECK or DECK@H, DECK a deck of inputs/levee_drawdown without .yaml and H an "
       "element size > 0 in m, e.g. levee_drawdown@0.05 or levee_drawdown_grid_conjugate@0.05";
-  if (parsed.deck.find('/') != std::string::npos ||
-      !std::ifstream(std::string(ARGINE_SOURCE_DIR) + "/inputs/levee_drawdown/" + parsed.deck +
-                     ".yaml"))
+  if (parsed.deck.find('/') != std::string::npos || !std::ifstream(leveeDeckPath(parsed.deck)))
     throw std::invalid_argument(expected);
   if (at == std::string::npos) return parsed;
   const std::string text = name.substr(at + 1);
