@@ -78,6 +78,7 @@ void FrictionalContact::constrainVelocities(
     const Kokkos::View<const Real*, MemSpace>& mass_liquid_i,
     const Kokkos::View<Real* [kDim], MemSpace>& velocity_solid_i,
     const Kokkos::View<Real* [kDim], MemSpace>& velocity_liquid_i, bool liquid_with_solid) const {
+  if (count() == 0) return;  // no wall: not even the kernel's captures
   const auto nodes = nodes_;
   const auto normals = normals_;
   const auto friction = friction_;

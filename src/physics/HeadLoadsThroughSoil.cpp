@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/PointBorneLoads.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/PointShapes.hpp"
@@ -16,7 +17,7 @@ template <class Family, bool kCompensated>
 void spreadImpl(const HeadPressureField& field, const MaterialPoints& points,
                 const PointShapes& shapes, const Kokkos::View<const int*, MemSpace>& liquid_m,
                 PointBorneLoadFields& fields) {
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto hi = fields.spread_i;
   const auto lo = fields.spread_lo;
   auto spread_sv = KE::create_scatter_view(fields.spread_i);

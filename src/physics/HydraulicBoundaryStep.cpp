@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/points/MaterialPoints.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
@@ -176,7 +177,7 @@ void addHydraulicLoads(const NodalLoads& loads, GridFields& grid) {
   const auto node = loads.node;
   const auto mixture = loads.mixture;
   const auto liquid = loads.liquid;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "add_hydraulic_loads", Kokkos::RangePolicy<ExecSpace>(0, loads.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -224,7 +225,7 @@ void correctHydraulicAccelerations(const FluxCorrectionList& corrections,
   const auto wet_i = fields.wet_volume_i;
   const FluxCorrectionList list = corrections;
   const BoundaryGradientFields f = fields;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "correct_hydraulic_accelerations", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -262,7 +263,7 @@ void correctHydraulicVelocities(const FluxCorrectionList& corrections,
   const auto wet_i = fields.wet_volume_i;
   const FluxCorrectionList list = corrections;
   const BoundaryGradientFields f = fields;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "correct_hydraulic_velocities", Kokkos::RangePolicy<ExecSpace>(0, corrections.count()),
       KOKKOS_LAMBDA(const int j) {

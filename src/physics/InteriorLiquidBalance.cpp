@@ -1,5 +1,6 @@
 #include "argine/physics/InteriorLiquidBalance.hpp"
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointLiquidExchange.hpp"
@@ -43,7 +44,7 @@ void returnLiquidMadeInsideImpl(const MaterialTable& table, const MaterialPoints
   const auto element_p = points.element;
   const auto local_p = points.local;
   const auto wet_i = fields.wet_volume_i;
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const PointRates rts = rates;
   Kokkos::parallel_for(
       "return_liquid_made_inside", Kokkos::RangePolicy<ExecSpace>(0, points.count),

@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointLiquidExchange.hpp"
@@ -94,7 +95,7 @@ void IntraElementSeepage::applyOverElements(const MaterialTable& table,
   const int count = points.count;
   heads_.fitPoints(count);
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto weight_p = heads_.weight_p;
   auto sums = heads_.element_sums;  // (element, 0): sum w phi, (element, 1): sum w
   Kokkos::deep_copy(sums, 0.0);
@@ -170,7 +171,7 @@ void IntraElementSeepage::apply(const MaterialTable& table, const MaterialPoints
   const int count = points.count;
   heads_.fitPoints(count);
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto head_p = Kokkos::subview(heads_.value_pc, Kokkos::ALL, 0);
   const auto weight_p = heads_.weight_p;
   const auto mode_p = Kokkos::subview(heads_.mode_pc, Kokkos::ALL, 0);

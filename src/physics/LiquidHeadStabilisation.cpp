@@ -1,5 +1,6 @@
 #include "argine/physics/LiquidHeadStabilisation.hpp"
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/LiquidState.hpp"
 #include "argine/physics/MaterialTable.hpp"
 #include "argine/physics/PointLiquidExchange.hpp"
@@ -146,7 +147,7 @@ void LiquidHeadStabilisation::apply(const MaterialTable& table, const MaterialPo
   centres_.fitPoints(count);
   slopes_.fitPoints(count);
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto centre_pc = centres_.value_pc, slope_pc = slopes_.value_pc;
   const auto conductance_p = centres_.weight_p, slope_weight_p = slopes_.weight_p;
   const auto mode_pc = centres_.mode_pc, slope_mode_pc = slopes_.mode_pc;

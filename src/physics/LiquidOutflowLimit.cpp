@@ -2,6 +2,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/MaterialTable.hpp"
@@ -38,7 +39,7 @@ OutflowLimitTotals LiquidOutflowLimit::apply(const MaterialTable& table,
                                              const MaterialPoints& points,
                                              const PointShapes& shapes, PointRates& rates) {
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto flux_p = rates.content_flux_divergence_increment_p;
   OutflowLimitTotals totals;
 

@@ -1,6 +1,7 @@
 #include "argine/physics/MomentumBalance.hpp"
 
 #include "argine/boundary/NodalConstraints.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/GridFields.hpp"
 
@@ -10,7 +11,7 @@ void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& sett
                          GridFields& grid) {
   if (settings.liquid_with_solid) return;  // solveMixtureMomentum sets a_L = a_S
   const auto nodes = active.nodes();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const Real alpha = settings.local_damping;
   const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;
@@ -63,7 +64,7 @@ void solveLiquidMomentum(const ActiveNodes& active, const MomentumSettings& sett
 void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& settings, Real dt,
                           GridFields& grid) {
   const auto nodes = active.nodes();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const Real alpha = settings.local_damping;
   const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;
@@ -104,7 +105,7 @@ void solveMixtureMomentum(const ActiveNodes& active, const MomentumSettings& set
 
 void moveLiquidWithSolid(const ActiveNodes& active, GridFields& grid) {
   const auto nodes = active.nodes();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "move_liquid_with_solid", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -117,7 +118,7 @@ void constrainAccelerations(const NodalConstraints& constraints, const MomentumS
                             Real dt, GridFields& grid) {
   const auto nodes = constraints.nodes();
   const auto flags = constraints.flags();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const Real alpha = settings.local_damping;
   const LocalDampingForm form = settings.local_damping_form;
   const Real scaling = settings.mass_scaling;

@@ -3,6 +3,7 @@
 #include <Kokkos_ScatterView.hpp>
 #include <vector>
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/HydraulicBoundaryStep.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -32,7 +33,7 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
                 const Kokkos::View<const int*, MemSpace>& liquid_m,
                 const BoundaryGradientFields& boundary, const GridFields& grid,
                 PointBorneLoadFields& fields) {
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto load_i = fields.load_i;
   const auto hi = fields.spread_i;
   const auto lo = fields.spread_lo;
@@ -160,7 +161,7 @@ void addPointBorneLoads(const PointBorneLoadFields& fields, const ActiveNodes& a
                         GridFields& grid) {
   const auto nodes = active.nodes();
   const auto spread_i = fields.spread_i;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "add_point_borne_loads", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {

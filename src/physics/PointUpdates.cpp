@@ -1,5 +1,7 @@
 #include "argine/physics/PointUpdates.hpp"
 
+#include "argine/core/UntrackedViews.hpp"
+
 namespace argine {
 
 namespace {
@@ -108,8 +110,10 @@ PointTotals updatePointStates(const MaterialTable& table, const PointRates& rate
                               Kokkos::View<const unsigned char*, MemSpace> air_reaches_e,
                               bool renew_liquid_state) {
   PointStateUpdate kernel;
-  kernel.v = PointUpdateViews{table.materials(),    points,        rates,
-                              hold_liquid_pressure, air_reaches_e, renew_liquid_state};
+  // untracked: the kernel's copies count no references (UntrackedViews.hpp)
+  kernel.v =
+      PointUpdateViews{untracked(table.materials()), untracked(points),        untracked(rates),
+                       hold_liquid_pressure,         untracked(air_reaches_e), renew_liquid_state};
   kernel.count = points.count;
   Real sums[2] = {0, 0};
   constexpr int kPointsPerCall = PointStateUpdate::kChunksPerCall * kLanes;

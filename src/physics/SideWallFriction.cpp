@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "argine/boundary/SideWalls.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/MomentumBalance.hpp"
 #include "argine/points/MaterialPoints.hpp"
@@ -95,7 +96,7 @@ void SideWallFriction::constrainAccelerations(const ActiveNodes& active,
   const auto nodes = active.nodes();
   const auto resistance_i = resistance_i_;
   const auto stuck_i = stuck_i_;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const bool liquid_with_solid = settings.liquid_with_solid;
   const Real scaling = settings.mass_scaling;
   Kokkos::parallel_for(
@@ -127,7 +128,7 @@ void SideWallFriction::holdStuckNodes(const ActiveNodes& active, const MomentumS
   if (!active_ || settings.fixed_skeleton) return;
   const auto nodes = active.nodes();
   const auto stuck_i = stuck_i_;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const bool liquid_with_solid = settings.liquid_with_solid;
   Kokkos::parallel_for(
       "side_wall_hold_stuck", Kokkos::RangePolicy<ExecSpace>(0, active.count()),

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "argine/core/Error.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/input/Deck.hpp"
 #include "argine/mesh/MeshGeometry.hpp"
 #include "argine/physics/LiquidState.hpp"
@@ -49,25 +50,39 @@ namespace {
 /// The criteria's inputs of every point as arrays (CriterionGathered in the header), so that
 /// each criterion is one loop over contiguous values without branches that GCC evaluates
 /// for several points per instruction (doc/scaling.md).
+/// Only the point fields the criteria read: every kernel copies its lambda's captures, and a
+/// copied View counts a reference (all 28 of MaterialPoints' were several per cent of the
+/// shipped levee's step).
 struct CriterionArrays {
-  MaterialPoints points;
+  Kokkos::View<const Real*, MemSpace> porosity_p, saturation_p, density_liquid_p, conductivity_p;
   Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered_p;
   Real mass_scaling = 1;
   bool implicit_drag = false;
 
+  CriterionArrays(const MaterialPoints& points,
+                  Kokkos::View<Real* [kCriterionGathered], Kokkos::LayoutLeft, MemSpace> gathered,
+                  Real scaling, bool drag)
+      : porosity_p(points.porosity),
+        saturation_p(points.saturation),
+        density_liquid_p(points.density_liquid),
+        conductivity_p(points.conductivity),
+        gathered_p(gathered),
+        mass_scaling(scaling),
+        implicit_drag(drag) {}
+
   KOKKOS_INLINE_FUNCTION CriterionInput input(int p) const {
     CriterionInput in;
     in.element_size = gathered_p(p, kGatheredElementSize);
-    in.porosity = points.porosity(p);
+    in.porosity = porosity_p(p);
     in.solid_density = gathered_p(p, kGatheredSolidDensity);
     in.liquid_bulk_modulus = gathered_p(p, kGatheredBulkModulus);
     in.constrained_modulus = gathered_p(p, kGatheredConstrainedModulus);
     in.mass_scaling = mass_scaling;
     in.implicit_drag = implicit_drag;
-    in.saturation = points.saturation(p);
+    in.saturation = saturation_p(p);
     in.saturation_suction_derivative = gathered_p(p, kGatheredSaturationSlope);
-    in.liquid_density = points.density_liquid(p);
-    in.hydraulic_conductivity = points.conductivity(p);
+    in.liquid_density = density_liquid_p(p);
+    in.hydraulic_conductivity = conductivity_p(p);
     return in;
   }
 };
@@ -158,8 +173,8 @@ CriterionKind governingCriterion(const std::vector<CriterionKind>& criteria,
 
 TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
                                          const MaterialTable& table) const {
-  const auto materials_m = table.materials();
-  const auto element_size = element_size_;
+  const auto materials_m = untracked(table.materials());
+  const auto element_size = untracked(element_size_);
   bool any_dry = false, any_wet = false;  // the passes no point takes are skipped
   for (int m = 0; m < table.count(); ++m) {
     any_dry = any_dry || !carriesLiquid(table.host(m).phase);
@@ -173,17 +188,20 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         "criterion_inputs_p", points.count);
     limit_p_ = Kokkos::View<Real*, MemSpace>("critical_step_p", points.count);
   }
-  const MaterialPoints pts = points;
-  const auto gathered_p = gathered_p_;
-  const auto limit_p = limit_p_;
+  const auto element_p =
+      untracked(points.element);  // the three fields the kernel reads (CriterionArrays)
+  const auto material_p = untracked(points.material);
+  const auto pressure_liquid_p = untracked(points.pressure_liquid);
+  const auto gathered_p = untracked(gathered_p_);
+  const auto limit_p = untracked(limit_p_);
 
   // The element size and the material's parameters of each point, so that the criteria's
   // loops need no branch; which criteria hold it, and where its step starts from.
   Kokkos::parallel_for(
       "critical_time_step_inputs", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        const int e = pts.element(p);
-        const PointMaterial& material = materials_m(pts.material(p));
+        const int e = element_p(p);
+        const PointMaterial& material = materials_m(material_p(p));
         gathered_p(p, kGatheredElementSize) = e < 0 ? Real(0) : element_size(e);
         gathered_p(p, kGatheredSolidDensity) = material.solid_density;
         gathered_p(p, kGatheredBulkModulus) = material.liquid.bulk_modulus;
@@ -191,7 +209,7 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         gathered_p(p, kGatheredConstrainedModulus) = material.constrained_modulus;
         gathered_p(p, kGatheredSaturationSlope) =
             slope_read && material.phase == PhaseModel::Unsaturated
-                ? saturationSuctionDerivativeAtPressure(material.retention, pts.pressure_liquid(p))
+                ? saturationSuctionDerivativeAtPressure(material.retention, pressure_liquid_p(p))
                 : 0;
         const Real held_to = e < 0                           ? kHeldToNone
                              : carriesLiquid(material.phase) ? kHeldToLiquid
@@ -199,7 +217,8 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         gathered_p(p, kGatheredHeldTo) = held_to;
         limit_p(p) = held_to == kHeldToLiquid ? kUnlimited : kmath::quietNaN();
       });
-  const CriterionArrays arrays{points, gathered_p, mass_scaling_, implicit_drag_};
+  const CriterionArrays arrays =
+      untracked(CriterionArrays(points, gathered_p, mass_scaling_, implicit_drag_));
   if (any_wet)
     for (const CriterionKind kind : criteria_)
       lowerLimitByCriterion(kind, arrays, points.count, limit_p);

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "argine/core/Lanes.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/parallel/NodalExchange.hpp"
 #include "argine/physics/AveragingPatches.hpp"
@@ -313,7 +314,7 @@ void VolumetricAveraging::averageMeanStresses(const MaterialTable& table,
   if (static_cast<int>(mean_shift_p_.extent(0)) != count)
     mean_shift_p_ = MeanStressShifts("averaging_mean_stress_shift", count);
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto value_pc = mean_stresses_.value_pc;
   const auto weight_p = mean_stresses_.weight_p;
   const auto mode_pc = mean_stresses_.mode_pc;
@@ -364,7 +365,7 @@ void VolumetricAveraging::averagePressureIncrements(const MaterialTable& table,
   const int count = points.count;
   pressure_increments_.fitPoints(count);
   const auto materials_m = table.materials();
-  const MaterialPoints pts = points;
+  const MaterialPoints pts = untracked(points);
   const auto old_p = old_pressure_;
   const auto value_p = Kokkos::subview(pressure_increments_.value_pc, Kokkos::ALL, 0);
   const auto weight_p = pressure_increments_.weight_p;

@@ -1,6 +1,7 @@
 #include "argine/physics/WallContact.hpp"
 
 #include "argine/boundary/FrictionalContact.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/physics/MomentumBalance.hpp"
 #include "argine/transfer/GridFields.hpp"
 
@@ -9,12 +10,13 @@ namespace argine {
 void constrainWallContactAccelerations(const FrictionalContact& contact,
                                        const MomentumSettings& settings, Real dt,
                                        GridFields& grid) {
+  if (contact.count() == 0) return;  // no wall: not even the kernel's captures
   const auto nodes = contact.nodes();
   const auto normals = contact.normals();
   const auto friction = contact.friction();
   const auto flags = contact.flags();
   const auto at_rest = contact.atRest();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const bool fixed_skeleton = settings.fixed_skeleton;
   const bool liquid_with_solid = settings.liquid_with_solid;
   Kokkos::parallel_for(

@@ -1,5 +1,6 @@
 #include "argine/transfer/GridFields.hpp"
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/CompensatedSum.hpp"
 
@@ -24,7 +25,7 @@ void GridFields::allocate(int num_nodes) {
 
 void GridFields::zero(const ActiveNodes& active) {
   const auto nodes = active.nodes();
-  const GridFields g = *this;
+  const GridFields g = untracked(*this);
   Kokkos::parallel_for(
       "grid_zero", Kokkos::RangePolicy<ExecSpace>(0, active.count()), KOKKOS_LAMBDA(const int j) {
         const int i = nodes(j);

@@ -1,5 +1,6 @@
 #include "argine/transfer/NodeRecords.hpp"
 
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/transfer/ActiveNodes.hpp"
 #include "argine/transfer/GridFields.hpp"
 
@@ -48,7 +49,7 @@ template <bool kAll>
 void addSumsToGrid(const char* name, const ActiveNodes& active, NodeRecords& records,
                    GridFields& grid) {
   const auto sums = records.sums_i;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   forEachActiveNode(
       name, active, KOKKOS_LAMBDA(const int i) {
         takeVectorSum(sums, i, kSumMomentumSolid, g.momentum_solid_i);
@@ -89,7 +90,7 @@ KOKKOS_FORCEINLINE_FUNCTION void readVector(const Values& values, int i, int slo
 void readVelocityUpdateValues(const ActiveNodes& active, const GridFields& grid,
                               NodeRecords& records) {
   const auto values = records.values_i;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   forEachActiveNode(
       "read_velocity_update_values", active, KOKKOS_LAMBDA(const int i) {
         readVector(values, i, kReadAccelerationSolid, g.acceleration_solid_i);
@@ -103,7 +104,7 @@ void readStrainValues(const ActiveNodes& active, const GridFields& grid,
                       Kokkos::View<const unsigned char*, MemSpace> conditioned_i,
                       NodeRecords& records) {
   const auto values = records.values_i;
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   const bool any_condition = conditioned_i.extent(0) > 0;
   forEachActiveNode(
       "read_strain_values", active, KOKKOS_LAMBDA(const int i) {

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "GridRelocation.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/mesh/Mesh.hpp"
 #include "argine/mesh/PointLocator.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -25,7 +26,7 @@ void PointShapes::prepareGrid(int n, const StructuredGrid& grid) {
 Kokkos::View<PointShape*, MemSpace> everyPointShape(const PointShapes& shapes,
                                                     const MaterialPoints& points) {
   Kokkos::View<PointShape*, MemSpace> out("every_point_shape", points.count);
-  const PointShapes s = shapes;
+  const PointShapes s = untracked(shapes);
   const auto element_p = points.element;
   const auto local_p = points.local;
   Kokkos::parallel_for(
@@ -189,10 +190,10 @@ template <class Shape>
 RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
                           const AffineElementMaps& maps, MaterialPoints& points,
                           PointShapes& shapes) {
-  const PointRelocation<Shape> relocation{
-      mesh.coordinates, mesh.connectivity, points.element,          points.local,
-      points.position,  shapes.stored_p,   maps.inverse_jacobian_e, maps.origin_e,
-      maps.affine_e,    locator,           shapes.fromAffineMaps()};
+  const PointRelocation<Shape> relocation = untracked(
+      PointRelocation<Shape>{mesh.coordinates, mesh.connectivity, points.element, points.local,
+                             points.position, shapes.stored_p, maps.inverse_jacobian_e,
+                             maps.origin_e, maps.affine_e, locator, shapes.fromAffineMaps()});
   const int count = points.count;
   RelocationCounts counts;
   // By chunks of kLanes points, the chunks of the transfers: a chunk found in one affine
@@ -200,8 +201,8 @@ RelocationCounts relocate(const Mesh& mesh, const PointLocator& locator,
   // was in one before is located first and writes its records only if it no longer is; any
   // other chunk writes them as it goes (one pass, as before chunks) and stays a chunk with
   // records until the next relocation, even if its points have come together.
-  const PointShapes rule = shapes;
-  const auto computed_c = shapes.computed_c;
+  const PointShapes rule = untracked(shapes);
+  const auto computed_c = untracked(shapes.computed_c);
   Kokkos::parallel_reduce(
       "relocate_and_evaluate_shapes",
       Kokkos::RangePolicy<ExecSpace>(0, (count + kLanes - 1) / kLanes),

@@ -4,6 +4,7 @@
 
 #include "GridPointTransfers.hpp"
 #include "PointShapesAt.hpp"
+#include "argine/core/UntrackedViews.hpp"
 #include "argine/materials/KernelMath.hpp"
 #include "argine/materials/ObjectiveStressRate.hpp"
 #include "argine/mesh/ShapeFunctions.hpp"
@@ -367,24 +368,12 @@ void mapPointsToGridImpl(const MaterialPoints& points, const PointShapes& shapes
                          const TransferSettings& transfer, const ActiveNodes& active,
                          NodeRecords& records, GridFields& grid,
                          const LowParts<GridFields>* compensation) {
-  const P2GPointViews v{points.material,
-                        points.volume,
-                        points.mass_solid,
-                        points.mass_liquid,
-                        points.density_liquid,
-                        points.porosity,
-                        points.saturation,
-                        points.conductivity,
-                        points.pressure_liquid,
-                        points.stress_effective,
-                        points.velocity_solid,
-                        points.velocity_liquid,
-                        points.position,
-                        points.affine_velocity_solid,
-                        points.affine_velocity_liquid,
-                        transfer.node_coordinates,
-                        transfer.mean_stress_shift,
-                        transfer.mean_stress_shift.extent(0) > 0};
+  const P2GPointViews v = untracked(P2GPointViews{
+      points.material, points.volume, points.mass_solid, points.mass_liquid, points.density_liquid,
+      points.porosity, points.saturation, points.conductivity, points.pressure_liquid,
+      points.stress_effective, points.velocity_solid, points.velocity_liquid, points.position,
+      points.affine_velocity_solid, points.affine_velocity_liquid, transfer.node_coordinates,
+      transfer.mean_stress_shift, transfer.mean_stress_shift.extent(0) > 0});
   const auto element_p = points.element;
   const auto local_p = points.local;
   const int count = points.count;
@@ -599,16 +588,10 @@ KineticTotals updateVelocitiesAndMapMomentaImpl(
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const G2PPointViews v{points.volume,
-                        points.mass_solid,
-                        points.mass_liquid,
-                        points.density_liquid,
-                        points.velocity_solid,
-                        points.velocity_liquid,
-                        points.position,
-                        points.affine_velocity_solid,
-                        points.affine_velocity_liquid,
-                        transfer.node_coordinates};
+  const G2PPointViews v = untracked(G2PPointViews{
+      points.volume, points.mass_solid, points.mass_liquid, points.density_liquid,
+      points.velocity_solid, points.velocity_liquid, points.position, points.affine_velocity_solid,
+      points.affine_velocity_liquid, transfer.node_coordinates});
   readVelocityUpdateValues(active, grid, records);
   const auto values_i = records.values_i;
   const VelocityBlend shares = gridShares(kScheme, transfer.blend, dt);
@@ -764,8 +747,8 @@ void interpolateVelocityGradientsImpl(const MaterialPoints& points, const PointS
   const auto material_p = points.material;
   const auto element_p = points.element;
   const auto local_p = points.local;
-  const StrainPointViews strain_v{points.volume, points.affine_velocity_solid,
-                                  points.affine_velocity_liquid};
+  const StrainPointViews strain_v = untracked(
+      StrainPointViews{points.volume, points.affine_velocity_solid, points.affine_velocity_liquid});
   records.allocate(grid.numNodes());
   readStrainValues(active, grid, conditioned_i, records);
   const auto values_i = records.values_i;
@@ -815,15 +798,17 @@ void mapPointsToGrid(const MaterialPoints& points, const PointShapes& shapes,
                      const LiquidCarrying& liquid_m, Real gravity, const TransferSettings& transfer,
                      const ActiveNodes& active, NodeRecords& records, GridFields& grid,
                      const LowParts<GridFields>* compensation) {
+  // the kernel's captures count no references (UntrackedViews.hpp)
   withFamilyAndScheme(shapes, transfer, [&](auto family, auto scheme) {
     mapPointsToGridImpl<decltype(family), decltype(scheme)::value>(
-        points, shapes, liquid_m, gravity, transfer, active, records, grid, compensation);
+        untracked(points), untracked(shapes), liquid_m, gravity, transfer, active, records, grid,
+        compensation);
   });
 }
 
 void computeNodalVelocities(const ActiveNodes& active, GridFields& grid) {
   const auto nodes = active.nodes();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "nodal_velocities", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -842,7 +827,7 @@ void computeNodalVelocities(const ActiveNodes& active, GridFields& grid) {
 
 void advanceNodalVelocities(const ActiveNodes& active, Real dt, GridFields& grid) {
   const auto nodes = active.nodes();
-  const GridFields g = grid;
+  const GridFields g = untracked(grid);
   Kokkos::parallel_for(
       "advance_nodal_velocities", Kokkos::RangePolicy<ExecSpace>(0, active.count()),
       KOKKOS_LAMBDA(const int j) {
@@ -872,9 +857,10 @@ KineticTotals updatePointVelocitiesAndMapMomenta(
         for (int d = 0; d < kDim; ++d) momentum_solid_i(i, d) = momentum_liquid_i(i, d) = 0;
       });
   KineticTotals totals;
+  MaterialPoints points_k = untracked(points);  // the kernel's captures (UntrackedViews.hpp)
   withFamilyAndScheme(shapes, transfer, [&](auto family, auto scheme) {
     totals = updateVelocitiesAndMapMomentaImpl<decltype(family), decltype(scheme)::value>(
-        shapes, liquid_m, active, dt, transfer, points, records, grid, compensation);
+        untracked(shapes), liquid_m, active, dt, transfer, points_k, records, grid, compensation);
   });
   return totals;
 }
@@ -886,13 +872,15 @@ void interpolateVelocityGradients(const MaterialPoints& points, const PointShape
                                   Kokkos::View<const unsigned char*, MemSpace> conditioned_i,
                                   TransferScheme scheme) {
   if (rates.count() != points.count) rates.allocate(points.count);
+  const MaterialPoints points_k = untracked(points);  // the kernel's captures (UntrackedViews.hpp)
+  const PointShapes shapes_k = untracked(shapes);
   withShapeFamily(shapes, [&](auto family) {
     if (scheme == TransferScheme::Tpic)
       interpolateVelocityGradientsImpl<decltype(family), true>(
-          points, shapes, liquid_m, active, grid, records, dt, rates, conditioned_i);
+          points_k, shapes_k, liquid_m, active, grid, records, dt, rates, conditioned_i);
     else
       interpolateVelocityGradientsImpl<decltype(family), false>(
-          points, shapes, liquid_m, active, grid, records, dt, rates, conditioned_i);
+          points_k, shapes_k, liquid_m, active, grid, records, dt, rates, conditioned_i);
   });
 }
 
