@@ -13,7 +13,9 @@ struct TwoViews {
   Kokkos::View<int* [2], MemSpace> b;
 };
 
-bool trackingOn() { return Kokkos::Impl::SharedAllocationRecord<void, void>::tracking_enabled(); }
+bool trackingOn() {
+  return Kokkos::Impl::SharedAllocationRecord<void, void>::tracking_enabled();
+}
 
 TEST(UntrackedViews, CopiesOfAStructCountNoReferencesAndSeeTheSameMemory) {
   TwoViews views{Kokkos::View<Real*, MemSpace>("a", 3), Kokkos::View<int* [2], MemSpace>("b", 2)};
