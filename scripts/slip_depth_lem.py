@@ -23,7 +23,6 @@ import concurrent.futures
 import csv
 import math
 import os
-import subprocess
 import sys
 
 import yaml
@@ -57,20 +56,7 @@ def run(argine, path, h, depth, args, ground, out):
     directory = os.path.join(out, name)
     text = deck_text(path, h, args.factor, args.duration, args.interval, depth, ground, name)
     if not ss.reusable(directory, name, text):
-        os.makedirs(directory, exist_ok=True)
-        copy = os.path.join(os.path.dirname(path), f".slip_depth_{name}.yaml")
-        with open(copy, "w") as handle:
-            handle.write(text)
-        with open(os.path.join(directory, name + ".deck.yaml"), "w") as handle:
-            handle.write(text)
-        launcher = (["mpiexec", "-n", str(args.ranks), "--oversubscribe"]
-                    if args.ranks > 1 else [])
-        try:
-            with open(os.path.join(directory, name + ".log"), "w") as log:
-                status = subprocess.call(launcher + [argine, "run", copy, "--output", directory],
-                                         stdout=log, stderr=subprocess.STDOUT)
-        finally:
-            os.remove(copy)
+        status = ss.run_deck_text(argine, path, text, directory, name, args.ranks, ".slip_depth_")
         if status != 0:
             print(f"{name}: argine failed ({status})", file=sys.stderr)
     return h, depth, directory, name

@@ -99,6 +99,25 @@ def reusable(directory, name, text):
     return False
 
 
+def run_deck_text(argine, path, text, directory, name, ranks=1, prefix=".run_"):
+    """Runs the deck `text` as a copy beside the deck at `path` (relative file keys keep
+    working; removed afterwards) into `directory`, keeping the deck there as
+    <name>.deck.yaml and the log as <name>.log; argine's exit status."""
+    os.makedirs(directory, exist_ok=True)
+    copy = os.path.join(os.path.dirname(path), f"{prefix}{name}.yaml")
+    with open(copy, "w") as handle:
+        handle.write(text)
+    with open(os.path.join(directory, name + ".deck.yaml"), "w") as handle:
+        handle.write(text)
+    try:
+        with open(os.path.join(directory, name + ".log"), "w") as handle:
+            launcher = ["mpiexec", "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []
+            return subprocess.call(launcher + [argine, "run", copy, "--output", directory],
+                                   stdout=handle, stderr=subprocess.STDOUT)
+    finally:
+        os.remove(copy)
+
+
 def run(argine, path, h, f, duration, out, existing=False, ranks=1):
     scene = os.path.splitext(os.path.basename(path))[0]
     name = f"{scene}_h{h:g}_f{f:g}"
@@ -107,19 +126,7 @@ def run(argine, path, h, f, duration, out, existing=False, ranks=1):
     text = deck_text(path, h, f, duration, name)
     if existing or reusable(directory, name, text):
         return h, f, directory, name
-    os.makedirs(directory, exist_ok=True)
-    copy = os.path.join(os.path.dirname(path), f".strength_{name}.yaml")
-    with open(copy, "w") as handle:
-        handle.write(text)
-    with open(os.path.join(directory, name + ".deck.yaml"), "w") as handle:
-        handle.write(text)
-    try:
-        with open(log, "w") as handle:
-            launcher = ["mpiexec", "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []
-            status = subprocess.call(launcher + [argine, "run", copy, "--output", directory],
-                                     stdout=handle, stderr=subprocess.STDOUT)
-    finally:
-        os.remove(copy)
+    status = run_deck_text(argine, path, text, directory, name, ranks, ".strength_")
     if status != 0:
         print(f"h = {h:g} m, f = {f:g}: argine failed ({status}), see {log}", file=sys.stderr)
     return h, f, directory, name
