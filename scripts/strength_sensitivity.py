@@ -109,11 +109,14 @@ def run_deck_text(argine, path, text, directory, name, ranks=1, prefix=".run_"):
         handle.write(text)
     with open(os.path.join(directory, name + ".deck.yaml"), "w") as handle:
         handle.write(text)
+    env = dict(os.environ)
+    if ranks > 1 and os.geteuid() == 0:  # Open MPI refuses root unless told (as convergence.sh)
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     try:
         with open(os.path.join(directory, name + ".log"), "w") as handle:
             launcher = ["mpiexec", "-n", str(ranks), "--oversubscribe"] if ranks > 1 else []
             return subprocess.call(launcher + [argine, "run", copy, "--output", directory],
-                                   stdout=handle, stderr=subprocess.STDOUT)
+                                   stdout=handle, stderr=subprocess.STDOUT, env=env)
     finally:
         os.remove(copy)
 
