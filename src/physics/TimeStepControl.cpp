@@ -188,8 +188,8 @@ TimeStepChoice TimeStepControl::evaluate(const MaterialPoints& points,
         "criterion_inputs_p", points.count);
     limit_p_ = Kokkos::View<Real*, MemSpace>("critical_step_p", points.count);
   }
-  const auto element_p =
-      untracked(points.element);  // the three fields the kernel reads (CriterionArrays)
+  // the three point fields the kernel reads (as CriterionArrays: no copy of all 28)
+  const auto element_p = untracked(points.element);
   const auto material_p = untracked(points.material);
   const auto pressure_liquid_p = untracked(points.pressure_liquid);
   const auto gathered_p = untracked(gathered_p_);

@@ -6,7 +6,7 @@
 /// Every copy of a counted View is an atomic increment, and its end a decrement, in a call
 /// into the Kokkos library; a kernel whose lambda captures a copy of MaterialPoints (28
 /// Views) or GridFields (14) makes two such copies. The shipped levee's step made about
-/// 1,600 of them, 4 % of its time on 2,757 points (doc/scaling.md, "Fixed costs of the
+/// 1,830 of them, 4 % of its time on 2,757 points (doc/scaling.md, "Fixed costs of the
 /// step"). Kokkos copies a kernel's functor the same way (parallel_for turns tracking off
 /// around it).
 
