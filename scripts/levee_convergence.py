@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Mesh convergence of a levee scene's run-out (issue P11 item 3).
 
-  levee_convergence.py [--times T ...] [--start S] [--figure PATH] [--wall H=SECONDS ...]
+  levee_convergence.py [--times T ...] [--start S] [--figure PATH] [--chart Q1,Q2,...]
+                       [--wall H=SECONDS ...]
                        H:DIR:NAME[:SERIES] ...
 
 Each H:DIR:NAME is one resolution: element size H (m), the results folder DIR and the deck's
@@ -265,6 +266,10 @@ def main():
     parser.add_argument("--start", type=float, default=1.0,
                         help="simulation time at which the event starts (s)")
     parser.add_argument("--figure", help="accuracy-against-wall-time chart (PNG)")
+    parser.add_argument("--chart", type=lambda text: text.split(","), default=list(QUANTITIES),
+                        metavar="Q1,Q2,...",
+                        help="the quantities the figure charts, comma-separated, as the tables "
+                        "name them without the unit (default: the four run-out quantities)")
     parser.add_argument("--wall", action="append", default=[], metavar="H=SECONDS",
                         help="wall time of the run of size H where its log does not hold it "
                         "(a run resumed from a checkpoint: the sum of its parts); repeatable")
@@ -319,15 +324,17 @@ def main():
         import matplotlib.pyplot as plt
 
         last = max(args.times)
-        fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(13, 3.2), layout="constrained")
-        for ax, q in zip(axes, QUANTITIES):
+        fig, axes = plt.subplots(1, len(args.chart), figsize=(13, 3.2), layout="constrained",
+                                 squeeze=False)
+        axes = axes[0]
+        for ax, q in zip(axes, args.chart):
             for label, group in groups.items():
                 t = max((t for t in args.times if all(t in r["rows"] for r in group)),
                         default=None)
                 if t is None:
                     continue
                 walls = [r["wall"] for r in group]
-                values = [r["rows"][t][q] for r in group]
+                values = [r["rows"][t].get(q, math.nan) for r in group]
                 ax.semilogx(walls, values, "o-", label=f"{label or 'runs'} ({t:g} s)")
                 for r, w, value in zip(group, walls, values):
                     ax.annotate(f"{r['h']:.2g} m", (w, value), fontsize=7)
