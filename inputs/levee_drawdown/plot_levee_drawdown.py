@@ -180,6 +180,13 @@ def plot_map(name, directory, path, until=None):
     return True
 
 
+def by_scene(table, name, default):
+    """The entry of `table` for the scene `name`: its own, else that of the longest scene name
+    it starts with (a variant's deck, e.g. levee_rainfall_grid_conjugate), else `default`."""
+    keys = sorted((k for k in table if name.startswith(k)), key=len, reverse=True)
+    return table[keys[0]] if keys else default
+
+
 def main(default_name="levee_drawdown"):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--name", default=default_name)
@@ -190,9 +197,9 @@ def main(default_name="levee_drawdown"):
     args = parser.parse_args()
     name = args.name
     global STAGE_START
-    STAGE_START = EVENT_STARTS.get(name, 1.0)
+    STAGE_START = by_scene(EVENT_STARTS, name, 1.0)
     results = args.results or os.path.join(ROOT, "results", name)
-    figures = args.figures or FOLDER.get(name, HERE)
+    figures = args.figures or by_scene(FOLDER, name, HERE)
     probes = read_probes(results, name)
     diag = read_csv(os.path.join(results, name + "_diagnostics.csv"))
     if args.until is not None:  # drop the rows after --until (a run that went on longer)
@@ -200,7 +207,7 @@ def main(default_name="levee_drawdown"):
             keep = series["time"] <= args.until * (1 + 1e-9)
             for key in series:
                 series[key] = series[key][keep]
-    report(name, probes, diag, args.times or TIMES.get(name, (5.0, 10.0, 20.0)))
+    report(name, probes, diag, args.times or by_scene(TIMES, name, (5.0, 10.0, 20.0)))
     history = os.path.join(figures, name + "_history.png")
     plot_history(name, probes, diag, history)
     written = [history]
