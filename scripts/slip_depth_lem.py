@@ -86,9 +86,7 @@ def main():
                         help="the last stage's Output Interval (s)")
     parser.add_argument("--time", type=float, default=1.1,
                         help="the output (simulation time, s) the table reads")
-    parser.add_argument("--jobs", type=int, default=1)
-    parser.add_argument("--ranks", type=int, default=1)
-    parser.add_argument("--argine", default=os.path.join(ROOT, "build", "argine"))
+    ss.add_run_options(parser)
     args = parser.parse_args()
     path = os.path.abspath(args.deck)
     ground = initial_ground(path)

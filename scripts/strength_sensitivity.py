@@ -99,6 +99,14 @@ def reusable(directory, name, text):
     return False
 
 
+def add_run_options(parser):
+    """The options of how the weakened decks run (run_deck_text): runs at once, MPI ranks a
+    run, and the argine binary."""
+    parser.add_argument("--jobs", type=int, default=1, help="runs at once")
+    parser.add_argument("--ranks", type=int, default=1, help="MPI ranks a run")
+    parser.add_argument("--argine", default=os.path.join(ROOT, "build", "argine"))
+
+
 def run_deck_text(argine, path, text, directory, name, ranks=1, prefix=".run_"):
     """Runs the deck `text` as a copy beside the deck at `path` (relative file keys keep
     working; removed afterwards) into `directory`, keeping the deck there as
@@ -170,11 +178,9 @@ def main():
                         help="the lowest factor of safety is taken over this long after --start (s)")
     parser.add_argument("--vanish", type=float, default=0.05,
                         help="crest probe |u| (m) below which the slide counts as vanished")
-    parser.add_argument("--jobs", type=int, default=1)
-    parser.add_argument("--ranks", type=int, default=1, help="MPI ranks a run")
+    add_run_options(parser)
     parser.add_argument("--existing", action="store_true",
                         help="run nothing: tabulate the (size, factor) pairs whose results exist")
-    parser.add_argument("--argine", default=os.path.join(ROOT, "build", "argine"))
     parser.add_argument("--figure")
     args = parser.parse_args()
     if args.ranks > 1 and os.geteuid() == 0:
