@@ -30,7 +30,10 @@ minus --start) it measures, from the material points (Exodus II, read with SciPy
   crest settlement at MP1  -u_y of that material at MP1's position (1.6, 2.9 m), the crest's
                      edge (m)
 
-and, as diagnostics of the moving mass's water (one table per time, not charted):
+and, for a run with a strength-reduction stage (DIR/NAME_strength_reduction.csv), FS_SRM of
+each search with its bracket and the limit equilibrium's F on the same state (one table per
+search, not charted), and, as diagnostics of the moving mass's water (one table per time, not
+charted):
 
   volume gain        the summed change of volume since the start of the points that moved
                      > 10 cm (L per m); with dilatancy angle 0 nearly nil in a converged slide
@@ -250,6 +253,66 @@ def water_drawn(directory, name, start, times):
     return out
 
 
+def strength_reductions(directory, name):
+    """The strength-reduction searches of a run (DIR/NAME_strength_reduction.csv; {} without
+    one), keyed by the simulation time each started from: FS_SRM, the mean of the highest
+    holding and the lowest failing factor by the search's own criterion (column `failed`),
+    half their gap (the search's tolerance once it bisected), and the limit equilibrium's F
+    on the same state (DIR/NAME_factor_of_safety.csv at that time, the deck's method; nan
+    where the run has no evaluation there). A search whose trials all held or all failed
+    gives nan."""
+    path = os.path.join(directory, f"{name}_strength_reduction.csv")
+    if not os.path.exists(path):
+        return {}
+    trials = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True))
+    lem_path = os.path.join(directory, f"{name}_factor_of_safety.csv")
+    lem = (np.atleast_1d(np.genfromtxt(lem_path, delimiter=",", names=True))
+           if os.path.exists(lem_path) else None)
+    out = {}
+    for start in np.unique(trials["time"]):
+        search = trials[trials["time"] == start]
+        held = search["factor"][search["failed"] == 0]
+        failed = search["factor"][search["failed"] == 1]
+        fs = bracket = math.nan
+        if held.size and failed.size:
+            low = held.max()
+            high = failed[failed > low].min() if (failed > low).any() else math.nan
+            fs, bracket = 0.5 * (low + high), 0.5 * (high - low)
+        f_lem = math.nan
+        if lem is not None:
+            k = int(np.argmin(np.abs(lem["time"] - start)))
+            if abs(lem["time"][k] - start) <= 1e-6:
+                f_lem = float(lem["factor_of_safety"][k])
+        out[float(start)] = {"FS_SRM": float(fs), "bracket": float(bracket),
+                             "limit equilibrium F": f_lem}
+    return out
+
+
+def strength_table(label, runs):
+    """FS_SRM and the limit equilibrium's F on the same state per resolution, with the
+    changes, observed order, Richardson limit and error bar (error_bar) of each."""
+    starts = sorted({t for r in runs for t in r["strength"]})
+    sizes = [r["h"] for r in runs]
+    for start in starts:
+        print(f"\n{label} strength reduction from t = {start:g} s (FS_SRM: the bracket's "
+              "middle, +- half its width)")
+        print("| quantity | " + " | ".join(f"h = {r['h']:.3g} m" for r in runs)
+              + " | changes to the next finer | observed order | Richardson limit "
+              "| finest with error bar |")
+        print("|---|" + "---|" * (len(runs) + 4))
+        for q in ("FS_SRM", "limit equilibrium F"):
+            values = [r["strength"].get(start, {}).get(q, math.nan) for r in runs]
+            cells = [f"{v:.4f}" for v in values]
+            if q == "FS_SRM":
+                cells = [f"{c} ± {r['strength'].get(start, {}).get('bracket', math.nan):.4f}"
+                         for c, r in zip(cells, runs)]
+            changes = [b - a for a, b in zip(values, values[1:])]
+            order, limit, bar = error_bar(values, sizes)
+            print(f"| {q} | " + " | ".join(cells) + " | "
+                  + ", ".join(f"{c:+.4f}" for c in changes) + f" | {order:.2f} | {limit:.4f} | "
+                  + (f"{values[-1]:.4f} ± {bar:.4f}" if not math.isnan(bar) else "-") + " |")
+
+
 def wall_time(directory, name):
     log = os.path.join(directory, name + ".log")
     if not os.path.exists(log):
@@ -309,13 +372,16 @@ def main():
             rows[t].update(probes.get(args.start + t, {}))
         wall = wall_given.get(float(h), wall_time(directory, name))
         runs.append({"h": float(h), "points": len(x0), "wall": wall,
-                     "rows": rows, "water": water, "series": series[0] if series else ""})
+                     "rows": rows, "water": water, "series": series[0] if series else "",
+                     "strength": strength_reductions(directory, name)})
     groups = {}
     for r in runs:
         groups.setdefault(r["series"], []).append(r)
     for label, group in groups.items():
         group.sort(key=lambda r: -r["h"])  # coarse to fine
         table(label, group, args.times)
+        if any(r["strength"] for r in group):
+            strength_table(label, group)
 
     if args.figure:
         import matplotlib

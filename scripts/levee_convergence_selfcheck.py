@@ -2,7 +2,8 @@
 """Self-check of levee_convergence.py's observed order and error bar (CTest
 scripts.levee_convergence_selfcheck, < 1 s) on sequences whose order and limit are known by
 hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m); its
-depth below the surface on five points; and its displacement at a probe's position."""
+depth below the surface on five points; its displacement at a probe's position; and its
+reading of a strength-reduction search (FS_SRM, bracket, the limit equilibrium's F)."""
 import math
 import os
 import sys
@@ -88,6 +89,30 @@ if not math.isnan(u[2]):
 u = at(0.1 + 0.2 * gx + 0.3 * gy, -0.4 + 0.1 * gx, components=True)
 check("probe at position, u_x", u[0][0], 0.65, 1e-12)
 check("probe at position, u_y (the settlement's sign)", u[0][1], -0.35, 1e-12)
+
+# A strength-reduction search read from its CSVs: from t = 3 s, F = 1 holds, 1.05 fails,
+# 1.025 and 1.0375 hold: FS_SRM = (1.0375 + 1.05) / 2 = 1.04375 +- 0.00625, and the limit
+# equilibrium's F the row at t = 3 s (1.081, not 1.2 at 2.5 s). A second search from t = 5 s
+# whose two trials both hold has no FS_SRM (nan) and no evaluation at its time (nan).
+import tempfile  # noqa: E402
+
+with tempfile.TemporaryDirectory() as folder:
+    with open(os.path.join(folder, "run_strength_reduction.csv"), "w") as handle:
+        handle.write("time,trial,factor,converged,accelerating,failed\n"
+                     "3,1,1,1,0,0\n3,2,1.05,0,0,1\n3,3,1.025,1,0,0\n3,4,1.0375,1,0,0\n"
+                     "5,1,1,1,0,0\n5,2,1.2,1,0,0\n")
+    with open(os.path.join(folder, "run_factor_of_safety.csv"), "w") as handle:
+        handle.write("time,factor_of_safety,bishop\n2.5,1.2,1.2\n3,1.081,1.081\n")
+    searches = lc.strength_reductions(folder, "run")
+    check("strength reduction: FS_SRM", searches[3.0]["FS_SRM"], 1.04375, 1e-12)
+    check("strength reduction: bracket", searches[3.0]["bracket"], 0.00625, 1e-12)
+    check("strength reduction: F on the same state", searches[3.0]["limit equilibrium F"],
+          1.081, 1e-12)
+    if not (math.isnan(searches[5.0]["FS_SRM"]) and
+            math.isnan(searches[5.0]["limit equilibrium F"])):
+        failures.append("strength reduction: a search that never failed has no FS_SRM")
+    if lc.strength_reductions(folder, "other"):
+        failures.append("strength reduction: a run without the CSV has no searches")
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
