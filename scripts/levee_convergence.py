@@ -288,6 +288,16 @@ def strength_reductions(directory, name):
     return out
 
 
+def strength_error_bar(values, sizes, brackets):
+    """error_bar of FS_SRM values, whose every value is known only to its search's bracket
+    (half-width): the finest value's error bar is at least its own bracket, so changes
+    smaller than the brackets (or none) do not make it vanish."""
+    order, limit, bar = error_bar(values, sizes)
+    if brackets and not math.isnan(brackets[-1]) and not math.isnan(bar):
+        bar = max(bar, brackets[-1])
+    return order, limit, bar
+
+
 def strength_table(label, runs):
     """FS_SRM and the limit equilibrium's F on the same state per resolution, with the
     changes, observed order, Richardson limit and error bar (error_bar) of each."""
@@ -307,7 +317,12 @@ def strength_table(label, runs):
                 cells = [f"{c} ± {r['strength'].get(start, {}).get('bracket', math.nan):.4f}"
                          for c, r in zip(cells, runs)]
             changes = [b - a for a, b in zip(values, values[1:])]
-            order, limit, bar = error_bar(values, sizes)
+            if q == "FS_SRM":
+                order, limit, bar = strength_error_bar(
+                    values, sizes, [r["strength"].get(start, {}).get("bracket", math.nan)
+                                    for r in runs])
+            else:
+                order, limit, bar = error_bar(values, sizes)
             print(f"| {q} | " + " | ".join(cells) + " | "
                   + ", ".join(f"{c:+.4f}" for c in changes) + f" | {order:.2f} | {limit:.4f} | "
                   + (f"{values[-1]:.4f} ± {bar:.4f}" if not math.isnan(bar) else "-") + " |")

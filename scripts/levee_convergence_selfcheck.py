@@ -111,6 +111,13 @@ with tempfile.TemporaryDirectory() as folder:
     if not (math.isnan(searches[5.0]["FS_SRM"]) and
             math.isnan(searches[5.0]["limit equilibrium F"])):
         failures.append("strength reduction: a search that never failed has no FS_SRM")
+    # FS_SRM that no longer changes between the finest two meshes keeps its bracket as its
+    # error bar (the changes alone would give 0); a larger change gives the larger bar.
+    order, limit, bar = lc.strength_error_bar([1.09375, 1.04375, 1.01875, 1.01875],
+                                              [0.4, 0.2, 0.1, 0.05], [0.00625] * 4)
+    check("strength reduction: error bar at least the bracket", bar, 0.00625, 1e-12)
+    order, limit, bar = lc.strength_error_bar([1.0, 1.5, 1.75], [0.4, 0.2, 0.1], [0.01] * 3)
+    check("strength reduction: error bar from the changes", bar, 0.3125, 1e-12)
     if lc.strength_reductions(folder, "other"):
         failures.append("strength reduction: a run without the CSV has no searches")
 
