@@ -82,6 +82,7 @@ MOVED = 0.10  # a point has "moved" beyond this displacement (m)
 NEAR_SURFACE = 0.2  # a point lies "near the surface" within this depth below it (m)
 SURFACE_BIN = 0.1  # the surface: the highest point of each column of this width (m)
 QUANTITIES = ("crest settlement", "toe run-out", "slip depth", "mobilised volume")
+STRENGTH = ("FS_SRM", "limit equilibrium F")  # of a run with a strength-reduction stage
 WATER = ("volume gain (L/m)", "of it near the surface (L/m)", "gain per cell (1e-3)",
          "water drawn (L/m)", "made inside (L/m)",
          "mass p_L (kPa)", "crest core swelling (1e-3)", "of it in its most swollen tenth",
@@ -298,6 +299,23 @@ def strength_error_bar(values, sizes, brackets):
     return order, limit, bar
 
 
+def chart_strength(ax, q, label, group):
+    """One series of `q` (FS_SRM with its brackets as error bars, or the limit equilibrium's
+    F) of the group's first strength-reduction search against each run's wall time."""
+    starts = sorted({t for r in group for t in r["strength"]})
+    if not starts:
+        return
+    found = [r["strength"].get(starts[0], {}) for r in group]
+    walls = [r["wall"] for r in group]
+    values = [f.get(q, math.nan) for f in found]
+    bars = [f.get("bracket", 0.0) if q == "FS_SRM" else 0.0 for f in found]
+    ax.errorbar(walls, values, yerr=bars, fmt="o-", capsize=3,
+                label=f"{label or 'runs'} (from t = {starts[0]:g} s)")
+    ax.set_xscale("log")
+    for r, w, value in zip(group, walls, values):
+        ax.annotate(f"{r['h']:.2g} m", (w, value), fontsize=7)
+
+
 def strength_table(label, runs):
     """FS_SRM and the limit equilibrium's F on the same state per resolution, with the
     changes, observed order, Richardson limit and error bar (error_bar) of each."""
@@ -344,10 +362,11 @@ def main():
     parser.add_argument("--start", type=float, default=1.0,
                         help="simulation time at which the event starts (s)")
     parser.add_argument("--figure", help="accuracy-against-wall-time chart (PNG)")
-    parser.add_argument("--chart", type=lambda text: text.split(","), default=list(QUANTITIES),
-                        metavar="Q1,Q2,...",
+    parser.add_argument("--chart", type=lambda text: text.split(","), metavar="Q1,Q2,...",
                         help="the quantities the figure charts, comma-separated, as the tables "
-                        "name them without the unit (default: the four run-out quantities)")
+                        "name them without the unit (default: the four run-out quantities; "
+                        "FS_SRM and the limit equilibrium's F of the first search where the "
+                        "runs reduce strength)")
     parser.add_argument("--wall", action="append", default=[], metavar="H=SECONDS",
                         help="wall time of the run of size H where its log does not hold it "
                         "(a run resumed from a checkpoint: the sum of its parts); repeatable")
@@ -399,17 +418,22 @@ def main():
             strength_table(label, group)
 
     if args.figure:
+        chart = args.chart or (list(STRENGTH) if any(r["strength"] for r in runs)
+                               else list(QUANTITIES))
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
         last = max(args.times)
-        fig, axes = plt.subplots(1, len(args.chart), figsize=(13, 3.2), layout="constrained",
+        fig, axes = plt.subplots(1, len(chart), figsize=(13, 3.2), layout="constrained",
                                  squeeze=False)
         axes = axes[0]
-        for ax, q in zip(axes, args.chart):
+        for ax, q in zip(axes, chart):
             for label, group in groups.items():
+                if q in STRENGTH:
+                    chart_strength(ax, q, label, group)
+                    continue
                 t = max((t for t in args.times if all(t in r["rows"] for r in group)),
                         default=None)
                 if t is None:
@@ -419,10 +443,13 @@ def main():
                 ax.semilogx(walls, values, "o-", label=f"{label or 'runs'} ({t:g} s)")
                 for r, w, value in zip(group, walls, values):
                     ax.annotate(f"{r['h']:.2g} m", (w, value), fontsize=7)
-            ax.set_title(q + (" (m3/m)" if q == "mobilised volume" else " (m)"), fontsize=9)
+            unit = " (-)" if q in STRENGTH else " (m3/m)" if q == "mobilised volume" else " (m)"
+            ax.set_title(q + unit, fontsize=9)
             ax.set_xlabel("wall time (s)")
         axes[0].legend(fontsize=7)
-        fig.suptitle(f"values after the event started (last common time up to {last:g} s) "
+        fig.suptitle("factors of safety of the state each strength reduction starts from "
+                     "against the run's wall time" if set(chart) <= set(STRENGTH) else
+                     f"values after the event started (last common time up to {last:g} s) "
                      "against the run's wall time", fontsize=9)
         fig.savefig(args.figure, dpi=110)
         print(f"\nwrote {args.figure}")
