@@ -328,19 +328,17 @@ def strength_table(label, runs):
               + " | changes to the next finer | observed order | Richardson limit "
               "| finest with error bar |")
         print("|---|" + "---|" * (len(runs) + 4))
-        for q in ("FS_SRM", "limit equilibrium F"):
-            values = [r["strength"].get(start, {}).get(q, math.nan) for r in runs]
+        found = [r["strength"].get(start, {}) for r in runs]
+        brackets = [f.get("bracket", math.nan) for f in found]
+        for q in STRENGTH:
+            values = [f.get(q, math.nan) for f in found]
             cells = [f"{v:.4f}" for v in values]
             if q == "FS_SRM":
-                cells = [f"{c} ± {r['strength'].get(start, {}).get('bracket', math.nan):.4f}"
-                         for c, r in zip(cells, runs)]
-            changes = [b - a for a, b in zip(values, values[1:])]
-            if q == "FS_SRM":
-                order, limit, bar = strength_error_bar(
-                    values, sizes, [r["strength"].get(start, {}).get("bracket", math.nan)
-                                    for r in runs])
+                cells = [f"{c} ± {w:.4f}" for c, w in zip(cells, brackets)]
+                order, limit, bar = strength_error_bar(values, sizes, brackets)
             else:
                 order, limit, bar = error_bar(values, sizes)
+            changes = [b - a for a, b in zip(values, values[1:])]
             print(f"| {q} | " + " | ".join(cells) + " | "
                   + ", ".join(f"{c:+.4f}" for c in changes) + f" | {order:.2f} | {limit:.4f} | "
                   + (f"{values[-1]:.4f} ± {bar:.4f}" if not math.isnan(bar) else "-") + " |")
