@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
-#include <set>
 
 #include "argine/core/Error.hpp"
 #include "argine/mesh/Mesh.hpp"
@@ -106,9 +104,11 @@ std::array<Real, 2> valuesAt(const HydraulicCondition& condition, Real time) {
   return {value, condition.linear_in_x.active ? condition.linear_in_x.end.at(time) : value};
 }
 
-/// The nodal loads of `forces` (node -> liquid components, then mixture) into `loads`.
-void toDevice(const std::map<int, std::array<Real, 2 * kDim>>& forces, NodalLoads& loads) {
-  const std::size_t n = forces.size();
+/// The nodal loads of `forces` (node -> liquid components, then mixture) into `loads`, in
+/// increasing node order.
+void toDevice(NodeTable<std::array<Real, 2 * kDim>>& forces, NodalLoads& loads) {
+  const std::vector<int>& nodes = forces.sortedNodes();
+  const std::size_t n = nodes.size();
   if (loads.count() != static_cast<int>(n)) {
     loads.node = Kokkos::View<int*, MemSpace>("hydraulic_load_node", n);
     loads.mixture = Kokkos::View<Real* [kDim], MemSpace>("hydraulic_load_mixture", n);
@@ -117,14 +117,14 @@ void toDevice(const std::map<int, std::array<Real, 2 * kDim>>& forces, NodalLoad
   auto node = Kokkos::create_mirror_view(loads.node);
   auto mixture = Kokkos::create_mirror_view(loads.mixture);
   auto liquid = Kokkos::create_mirror_view(loads.liquid);
-  std::size_t j = 0;
-  for (const auto& [i, f] : forces) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const int i = nodes[j];
+    const std::array<Real, 2 * kDim>& f = forces.at(i);
     node(j) = i;
     for (int d = 0; d < kDim; ++d) {
       liquid(j, d) = f[d];
       mixture(j, d) = f[kDim + d];
     }
-    ++j;
   }
   Kokkos::deep_copy(loads.node, node);
   Kokkos::deep_copy(loads.mixture, mixture);
@@ -154,9 +154,9 @@ bool HydraulicConditions::valuesUnchangedAt(Real time) const {
   return true;
 }
 
-std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& condition,
-                                                   const FreeBoundary& boundary) const {
-  std::vector<FreeSide> sides;
+void HydraulicConditions::sidesOf(const HydraulicCondition& condition, const FreeBoundary& boundary,
+                                  std::vector<FreeSide>& sides) const {
+  sides.clear();
   if (condition.on_zone) {
     for (const FreeSide& side : boundary.sides())
       if (zoneContains(condition.zone, side.midpoint(0), side.midpoint(1))) sides.push_back(side);
@@ -164,7 +164,6 @@ std::vector<FreeSide> HydraulicConditions::sidesOf(const HydraulicCondition& con
     for (const auto& [element, local] : condition.side_set)
       if (boundary.isActive(element)) sides.push_back(boundary.sideOf(element, local));
   }
-  return sides;
 }
 
 bool HydraulicConditions::sealsSide(const std::vector<unsigned char>& rules, const FreeSide& side) {
@@ -177,33 +176,30 @@ bool HydraulicConditions::sealsSide(const std::vector<unsigned char>& rules, con
 }
 
 void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boundary) {
-  // node -> force on the liquid (full p^) and on the mixture (free water only: p^ > 0)
-  std::map<int, std::array<Real, 2 * kDim>> forces;
-  std::map<int, std::array<Real, 2 * kDim>> head_forces;  // through the soil: apart
-  struct Claim {
-    int kind = 0;
-    Real rain = 0;  ///< vertical inflow q (m/s), 0 for a seepage face
-    int condition = 0;
-  };
-  std::map<int, Claim> corrections;  // node -> the first condition correcting it
-  std::map<int, int> owner;          // node -> condition
-  std::map<std::pair<int, int>, std::array<Real, kDim>> face;  // (condition, node) -> sum n L/2
+  using Claim = PlanScratch::Claim;
+  PlanScratch& t = scratch_;  // every table emptied here, its storage kept
+  t.forces.clear();
+  t.head_forces.clear();
+  t.corrections.clear();
+  t.owner.clear();
+  t.face.resize(conditions_.size() + 1);  // the atmosphere's last
+  for (auto& face : t.face) face.clear();
   for (std::size_t c = 0; c < conditions_.size(); ++c) {
     const HydraulicCondition& condition = conditions_[c];
     const int index = static_cast<int>(c);
-    const std::vector<FreeSide> sides = sidesOf(condition, boundary);
-    sides_used_[c] = sides;
+    std::vector<FreeSide>& sides = sides_used_[c];
+    sidesOf(condition, boundary, sides);
     const std::array<Real, 2> values = valuesAt(condition, time);
     const Real value = values[0];
     current_values_[c] = value;
     current_end_values_[c] = values[1];
     auto claim = [&](int node, FluxCorrection kind, Real rain) {
-      corrections.emplace(node, Claim{static_cast<int>(kind), rain, index});
+      t.corrections.emplace(node, Claim{static_cast<int>(kind), rain, index});
     };
     for (const FreeSide& side : sides) {
       for (const int node : {side.a, side.b}) {
-        owner.emplace(node, index);
-        auto& sum = face[{index, node}];
+        t.owner.emplace(node, index);
+        auto& sum = t.face[c][node];
         for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
       }
       Real fa[kDim] = {0, 0}, fb[kDim] = {0, 0};  // liquid
@@ -246,8 +242,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
           break;
       }
       if (fa[0] != 0 || fa[1] != 0 || fb[0] != 0 || fb[1] != 0) {
-        auto& to =
-            heads_through_soil_ && condition.kind == BoundaryKind::TotalHead ? head_forces : forces;
+        auto& to = heads_through_soil_ && condition.kind == BoundaryKind::TotalHead ? t.head_forces
+                                                                                    : t.forces;
         for (int d = 0; d < kDim; ++d) {
           to[side.a][d] += fa[d];
           to[side.b][d] += fb[d];
@@ -258,79 +254,92 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     }
   }
 
+  // The nodes the conditions correct (the atmosphere's, claimed below, are not among them).
+  t.conditioned.clear();
+  for (const int node : t.corrections.sortedNodes()) t.conditioned.push_back(node);
+
   // The atmosphere on the free sides no condition covers: seepage-face nodes where no
   // condition owns the node (a condition's node keeps its condition's rule).
   const int atmosphere = static_cast<int>(conditions_.size());
-  std::vector<int> conditioned;
-  for (const auto& [node, entry] : corrections) conditioned.push_back(node);
   if (atmosphere_) {
-    std::set<std::pair<int, int>> covered;  // (element, local side) of the conditions' sides
+    t.covered.clear();
     for (const auto& sides : sides_used_)
-      for (const FreeSide& side : sides) covered.insert({side.element, side.side});
+      for (const FreeSide& side : sides) t.covered.emplace_back(side.element, side.side);
+    std::sort(t.covered.begin(), t.covered.end());
+    auto covered = [&](const FreeSide& side) {
+      return std::binary_search(t.covered.begin(), t.covered.end(),
+                                std::make_pair(side.element, side.side));
+    };
     auto rule = [&](int node) { return rules_.empty() ? 0u : unsigned{rules_[node]}; };
     auto ruled = [&](const FreeSide& side) {  // sealed, or its p_L prescribed (setOtherLiquidRules)
       return (rule(side.a) & rule(side.b) & kPressurePrescribed) != 0 || sealsSide(rules_, side);
     };
     for (const FreeSide& side : boundary.sides()) {
-      if (covered.count({side.element, side.side}) || ruled(side)) continue;
+      if (covered(side) || ruled(side)) continue;
       for (const int node : {side.a, side.b}) {
-        if (owner.count(node) || (rule(node) & kPressurePrescribed)) continue;
-        corrections.emplace(node,
-                            Claim{static_cast<int>(FluxCorrection::SeepageFace), 0.0, atmosphere});
-        auto& sum = face[{atmosphere, node}];
+        if (t.owner.contains(node) || (rule(node) & kPressurePrescribed)) continue;
+        t.corrections.emplace(
+            node, Claim{static_cast<int>(FluxCorrection::SeepageFace), 0.0, atmosphere});
+        auto& sum = t.face[atmosphere][node];
         for (int d = 0; d < kDim; ++d) sum[d] += 0.5 * side.length * side.normal[d];
       }
     }
   }
 
   // loads: liquid and mixture (the head's apart when it loads through the soil)
-  toDevice(forces, loads_);
-  toDevice(head_forces, head_loads_);
+  toDevice(t.forces, loads_);
+  toDevice(t.head_forces, head_loads_);
 
-  std::vector<int> c_node, c_kind;
-  std::vector<Real> c_q, c_normal, c_length;
-  for (const auto& [node, entry] : corrections) {
-    c_node.push_back(node);
-    c_kind.push_back(entry.kind);
-    const auto& sum = face[{entry.condition, node}];
+  t.node.clear();
+  t.kind.clear();
+  t.q_out.clear();
+  t.normal.clear();
+  t.length.clear();
+  for (const int node : t.corrections.sortedNodes()) {
+    const Claim& entry = t.corrections.at(node);
+    t.node.push_back(node);
+    t.kind.push_back(entry.kind);
+    const auto& sum = t.face[entry.condition].at(node);
     const Real length = std::hypot(sum[0], sum[1]);
     Real normal[kDim];
     for (int d = 0; d < kDim; ++d) {
       normal[d] = length > 0 ? sum[d] / length : 0;
-      c_normal.push_back(normal[d]);
+      t.normal.push_back(normal[d]);
     }
-    c_q.push_back(verticalRainOutwardFlux(entry.rain, normal));
-    c_length.push_back(length);
+    t.q_out.push_back(verticalRainOutwardFlux(entry.rain, normal));
+    t.length.push_back(length);
   }
-  const bool resized = corrections_.count() != static_cast<int>(c_node.size());
-  toDevice(c_node, "correction_node", corrections_.node);
-  toDevice(c_kind, "correction_kind", corrections_.kind);
-  toDevice(c_q, "correction_q_out", corrections_.q_out);
-  toDevice(c_length, "correction_face_length", corrections_.face_length);
+  const std::size_t n = t.node.size();
+  const bool resized = corrections_.count() != static_cast<int>(n);
+  toDevice(t.node, "correction_node", corrections_.node);
+  toDevice(t.kind, "correction_kind", corrections_.kind);
+  toDevice(t.q_out, "correction_q_out", corrections_.q_out);
+  toDevice(t.length, "correction_face_length", corrections_.face_length);
   if (resized || !corrections_.applied.data()) {
-    corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", c_node.size());
-    corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", c_node.size());
+    corrections_.applied = Kokkos::View<int*, MemSpace>("correction_applied", n);
+    corrections_.normal = Kokkos::View<Real* [kDim], MemSpace>("correction_normal", n);
   }
   {
     auto normal = Kokkos::create_mirror_view(corrections_.normal);
-    for (std::size_t j = 0; j < c_node.size(); ++j)
-      for (int d = 0; d < kDim; ++d) normal(j, d) = c_normal[kDim * j + d];
+    for (std::size_t j = 0; j < n; ++j)
+      for (int d = 0; d < kDim; ++d) normal(j, d) = t.normal[kDim * j + d];
     Kokkos::deep_copy(corrections_.normal, normal);
   }
 
-  for (const auto& [node, f] : forces) conditioned.push_back(node);
-  for (const auto& [node, f] : head_forces) conditioned.push_back(node);
-  std::sort(conditioned.begin(), conditioned.end());
-  conditioned.erase(std::unique(conditioned.begin(), conditioned.end()), conditioned.end());
-  toDevice(conditioned, "conditioned_node", conditioned_nodes_);
+  for (const int node : t.forces.sortedNodes()) t.conditioned.push_back(node);
+  for (const int node : t.head_forces.sortedNodes()) t.conditioned.push_back(node);
+  std::sort(t.conditioned.begin(), t.conditioned.end());
+  t.conditioned.erase(std::unique(t.conditioned.begin(), t.conditioned.end()), t.conditioned.end());
+  toDevice(t.conditioned, "conditioned_node", conditioned_nodes_);
 
-  std::vector<int> o_node, o_owner;
-  for (const auto& [node, c] : owner) {
-    o_node.push_back(node);
-    o_owner.push_back(c);
+  t.owned.clear();
+  t.owners.clear();
+  for (const int node : t.owner.sortedNodes()) {
+    t.owned.push_back(node);
+    t.owners.push_back(t.owner.at(node));
   }
-  toDevice(o_node, "owned_node", ownership_.node);
-  toDevice(o_owner, "owner", ownership_.owner);
+  toDevice(t.owned, "owned_node", ownership_.node);
+  toDevice(t.owners, "owner", ownership_.owner);
 }
 
 }  // namespace argine

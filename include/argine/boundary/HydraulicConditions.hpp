@@ -23,13 +23,16 @@
 ///    conditionedNodes().
 /// Host loops over the boundary sides only (boundary-sized), a few small copies per step.
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "argine/boundary/BoundaryConditions.hpp"
 #include "argine/boundary/FreeBoundary.hpp"
 #include "argine/boundary/HydraulicAlgebra.hpp"
 #include "argine/boundary/LinearInX.hpp"
+#include "argine/boundary/NodeTable.hpp"
 #include "argine/boundary/TimeSeries.hpp"
 #include "argine/boundary/Zone.hpp"
 #include "argine/input/Deck.hpp"
@@ -151,8 +154,29 @@ class HydraulicConditions {
   bool valuesUnchangedAt(Real time) const;
 
  private:
-  std::vector<FreeSide> sidesOf(const HydraulicCondition& condition,
-                                const FreeBoundary& boundary) const;
+  /// The free sides `condition` applies on, into `sides` (cleared first).
+  void sidesOf(const HydraulicCondition& condition, const FreeBoundary& boundary,
+               std::vector<FreeSide>& sides) const;
+
+  /// plan()'s host tables and lists, kept between steps: once they have grown to the
+  /// boundary's size a step allocates nothing on the host.
+  struct PlanScratch {
+    struct Claim {
+      int kind = 0;
+      Real rain = 0;  ///< vertical inflow q (m/s), 0 for a seepage face
+      int condition = 0;
+    };
+    /// node -> force on the liquid (full p^), then on the mixture (free water only: p^ > 0)
+    NodeTable<std::array<Real, 2 * kDim>> forces;
+    NodeTable<std::array<Real, 2 * kDim>> head_forces;  ///< through the soil: apart
+    NodeTable<Claim> corrections;                       ///< node -> the first claim
+    NodeTable<int> owner;                               ///< node -> condition
+    /// per condition (the atmosphere last): node -> sum of n L / 2 of its sides there
+    std::vector<NodeTable<std::array<Real, kDim>>> face;
+    std::vector<std::pair<int, int>> covered;  ///< (element, side) of the conditions' sides
+    std::vector<int> conditioned, node, kind, owned, owners;
+    std::vector<Real> q_out, normal, length;
+  };
 
   std::vector<HydraulicCondition> conditions_;
   bool atmosphere_ = false;
@@ -167,6 +191,7 @@ class HydraulicConditions {
   std::vector<std::vector<FreeSide>> sides_used_;
   std::vector<Real> current_values_;
   std::vector<Real> current_end_values_;  ///< at x1 (pressure linear in x), else as above
+  PlanScratch scratch_;
 };
 
 }  // namespace argine
