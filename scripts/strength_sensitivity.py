@@ -14,7 +14,8 @@ about d / slope, and comparing f_c across meshes says whether a mesh changes the
 driving state or only its resistance.
 
   scripts/strength_sensitivity.py DECK --sizes 0.4 0.2 0.1 --factors 0.9 0.95 1 1.05 1.1
-      [--duration S] [--times T ...] [--jobs N] [--ranks R] [--figure PNG]
+      [--duration S] [--times T ...] [--flow-rule deck|associated] [--jobs N] [--ranks R]
+      [--figure PNG]
 
 Each run's deck is a copy beside DECK (relative file keys keep working, removed afterwards)
 with the element size, the last stage's Material Changes and Duration, a Factor Of Safety
@@ -61,9 +62,11 @@ def strength_in_last_stage(deck):
     return out
 
 
-def deck_text(path, h, f, duration, name):
+def deck_text(path, h, f, duration, name, associated=False):
     """The text of the deck at element size h with strength factor f in its last stage (the
-    values: c' to 6 and phi' to 10 significant digits)."""
+    values: c' to 6 and phi' to 10 significant digits); with `associated` the last stage
+    also sets each material's dilatancy angle to its reduced phi' (associated flow from the
+    state the stage starts from, as a strength reduction's associated trials)."""
     with open(path) as handle:
         deck = yaml.safe_load(handle)
     argine = deck["argine"]
@@ -76,6 +79,8 @@ def deck_text(path, h, f, duration, name):
         entry["Cohesion (Pa)"] = float(f"{c * f:.6g}")
         entry["Friction Angle (deg)"] = float(
             f"{math.degrees(math.atan(math.tan(math.radians(phi)) * f)):.10g}")
+        if associated:
+            entry["Dilatancy Angle (deg)"] = entry["Friction Angle (deg)"]
     if duration is not None:
         last["Duration (s)"] = duration
     argine.setdefault("Factor Of Safety", {"Minimum Depth (m)": 0.5, "Slice Table": False})
@@ -129,12 +134,12 @@ def run_deck_text(argine, path, text, directory, name, ranks=1, prefix=".run_"):
         os.remove(copy)
 
 
-def run(argine, path, h, f, duration, out, existing=False, ranks=1):
+def run(argine, path, h, f, duration, out, existing=False, ranks=1, associated=False):
     scene = os.path.splitext(os.path.basename(path))[0]
-    name = f"{scene}_h{h:g}_f{f:g}"
+    name = f"{scene}_h{h:g}_f{f:g}" + ("_associated" if associated else "")
     directory = os.path.join(out, name)
     log = os.path.join(directory, name + ".log")
-    text = deck_text(path, h, f, duration, name)
+    text = deck_text(path, h, f, duration, name, associated)
     if existing or reusable(directory, name, text):
         return h, f, directory, name
     status = run_deck_text(argine, path, text, directory, name, ranks, ".strength_")
@@ -178,6 +183,9 @@ def main():
                         help="the lowest factor of safety is taken over this long after --start (s)")
     parser.add_argument("--vanish", type=float, default=0.05,
                         help="crest probe |u| (m) below which the slide counts as vanished")
+    parser.add_argument("--flow-rule", choices=["deck", "associated"], default="deck",
+                        help="the last stage's dilatancy: the deck's, or each material's "
+                             "reduced phi' (associated); runs named ..._associated")
     add_run_options(parser)
     parser.add_argument("--existing", action="store_true",
                         help="run nothing: tabulate the (size, factor) pairs whose results exist")
@@ -191,7 +199,8 @@ def main():
     factors = sorted(args.factors)
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         jobs = [pool.submit(run, args.argine, os.path.abspath(args.deck), h, f, args.duration, out,
-                            args.existing, args.ranks) for h in args.sizes for f in factors]
+                            args.existing, args.ranks, args.flow_rule == "associated")
+                for h in args.sizes for f in factors]
         done = [job.result() for job in jobs]
     last = max(args.times)
     results = {}
