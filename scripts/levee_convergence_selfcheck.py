@@ -3,7 +3,8 @@
 scripts.levee_convergence_selfcheck, < 1 s) on sequences whose order and limit are known by
 hand: q(h) = 2 - h^p sampled at one refinement ratio and at two (0.1, 0.05, 1/28 m); its
 depth below the surface on five points; its displacement at a probe's position; and its
-reading of a strength-reduction search (FS_SRM, bracket, the limit equilibrium's F)."""
+reading of a strength-reduction search (FS_SRM, bracket, the limit equilibrium's F); and
+strength_sensitivity.py's weakened deck (strength and flow rule of its last stage)."""
 import math
 import os
 import sys
@@ -120,6 +121,30 @@ with tempfile.TemporaryDirectory() as folder:
     check("strength reduction: error bar from the changes", bar, 0.3125, 1e-12)
     if lc.strength_reductions(folder, "other"):
         failures.append("strength reduction: a run without the CSV has no searches")
+
+# strength_sensitivity.py's weakened deck: the shipped drawdown grid deck at f = 0.75 has
+# c' = 0.75 * 2 kPa = 1500 Pa and phi' = atan(0.75 tan 27 deg) = atan(0.382144) = 20.914 deg
+# in its last stage; with --flow-rule associated psi = that phi', without it no dilatancy
+# change (the deck's psi = 0 stands).
+import strength_sensitivity as ss  # noqa: E402
+import yaml  # noqa: E402
+
+deck = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "inputs",
+                    "levee_drawdown", "levee_drawdown_grid_conjugate.yaml")
+for associated in (False, True):
+    weakened = yaml.safe_load(ss.deck_text(deck, 0.1, 0.75, 4.0, "copy", associated))["argine"]
+    last = list(weakened["Stages"].values())[-1]
+    soil = last["Material Changes"]["soil"]
+    label = "associated" if associated else "deck's flow rule"
+    check(f"weakened deck ({label}): c'", soil["Cohesion (Pa)"], 1500.0, 1e-9)
+    check(f"weakened deck ({label}): phi'", soil["Friction Angle (deg)"], 20.914, 5e-4)
+    if associated:
+        check("weakened deck (associated): psi", soil["Dilatancy Angle (deg)"], 20.914, 5e-4)
+    elif "Dilatancy Angle (deg)" in soil:
+        failures.append("weakened deck: the deck's flow rule changed without --flow-rule")
+    check(f"weakened deck ({label}): element size",
+          weakened["Mesh"]["Generate"]["Element Size (m)"], 0.1, 0)
+    check(f"weakened deck ({label}): duration", last["Duration (s)"], 4.0, 0)
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed: " + ", ".join(failures))
