@@ -24,15 +24,17 @@ void spreadImpl(const HeadPressureField& field, const MaterialPoints& points,
   Kokkos::parallel_for(
       "head_loads_through_soil", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
-        typename Family::Record scratch;
-        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
-        if (shape.node[0] < 0) return;
+        // the point's pressures first: where the river's field is nil (above its level, most
+        // points once it is drawn down) it stops before its shapes are read
         const Real y = pts.position(p, 1);
         Real p_mixture, dp_mixture, p_liquid = 0, dp_liquid = 0;
         field.mixture(y, p_mixture, dp_mixture);
         const bool wet = liquid_m(pts.material(p)) != 0;
         if (wet) field.liquid(y, p_liquid, dp_liquid);
         if (p_mixture == 0 && dp_mixture == 0 && p_liquid == 0 && dp_liquid == 0) return;
+        typename Family::Record scratch;
+        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
+        if (shape.node[0] < 0) return;
         const Real volume = pts.volume(p);
         auto spread_i = spread_sv.access();
         for (int a = 0; a < Family::kNodes; ++a) {

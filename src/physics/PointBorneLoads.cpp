@@ -47,13 +47,15 @@ void spreadImpl(const MaterialPoints& points, const PointShapes& shapes,
       "point_borne_load_spread", Kokkos::RangePolicy<ExecSpace>(0, points.count),
       KOKKOS_LAMBDA(const int p) {
         typename Family::Record scratch;
-        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
-        if (shape.node[0] < 0) return;
-        // most points have no loaded node (loads sit on the surface's nodes): they stop here
+        // most points have no loaded node (loads sit on the surface's nodes): they stop here,
+        // before their weights are read
+        const int* node = Family::nodesOf(shapes, p, pts.element, pts.local, scratch);
+        if (node[0] < 0) return;
         bool loaded = false;
         for (int a = 0; a < Family::kNodes; ++a)
-          for (int c = 0; c < 2 * kDim; ++c) loaded = loaded || load_i(shape.node[a], c) != 0;
+          for (int c = 0; c < 2 * kDim; ++c) loaded = loaded || load_i(node[a], c) != 0;
         if (!loaded) return;
+        const auto& shape = Family::of(shapes, p, pts.element, pts.local, scratch);
         const PointWeights w = weightsOf(pts, p, liquid_m(pts.material(p)) != 0);
         // the point's share of its nodes' loads, and its outward normal (4.51 interpolated)
         Real share[2 * kDim] = {0, 0, 0, 0};
@@ -124,6 +126,9 @@ void spreadPointBorneLoads(const NodalLoads& loads, const MaterialPoints& points
                            const Kokkos::View<const int*, MemSpace>& liquid_m,
                            const BoundaryGradientFields& boundary, const GridFields& grid,
                            PointBorneLoadFields& fields) {
+  // No load on this rank (the river's pressure through the soil, or no condition that
+  // loads): every point would find no loaded node and add nothing.
+  if (loads.count() == 0) return;
   const auto node = loads.node;
   const auto mixture = loads.mixture;
   const auto liquid = loads.liquid;

@@ -221,6 +221,15 @@ struct ElementShapeFamily {
                                                           PointShape& scratch) {
     return shapes.of(p, element_p, local_p, scratch);
   }
+  /// The nodes of point p's stencil (node[0] < 0: lost), for a kernel that asks whether it
+  /// needs a point before it reads the weights: here of()'s, which reads them anyway.
+  template <class ElementView, class LocalView>
+  KOKKOS_FORCEINLINE_FUNCTION static const int* nodesOf(const PointShapes& shapes, int p,
+                                                        const ElementView& element_p,
+                                                        const LocalView& local_p,
+                                                        PointShape& scratch) {
+    return of(shapes, p, element_p, local_p, scratch).node;
+  }
   /// The element centre's N = 1 / kNodes, the point's own gradients.
   KOKKOS_INLINE_FUNCTION static void fluxCentre(const PointShapes&, int, const PointShape& shape,
                                                 Real value[kNodes], Real gradient[kNodes][kDim]) {
@@ -241,6 +250,16 @@ struct GridShapeFamily {
                                                           GridShapeRecord& scratch) {
     expandGridShape(shapes.grid_p(p), shapes.grid_row, scratch);
     return scratch;
+  }
+  /// The nodes of point p's stencil (node[0] < 0: lost) from its tensor lines alone, without
+  /// expanding the nine weights and gradients of().
+  template <class ElementView, class LocalView>
+  KOKKOS_INLINE_FUNCTION static const int* nodesOf(const PointShapes& shapes, int p,
+                                                   const ElementView&, const LocalView&,
+                                                   GridShapeRecord& scratch) {
+    const TensorShape& t = shapes.grid_p(p);
+    for (int a = 0; a < kGridStencilNodes; ++a) scratch.node[a] = gridNode(t, shapes.grid_row, a);
+    return scratch.node;
   }
   /// The bilinear shapes of the point's cell at its centre (cellCentreWeights1D): N = 1/4
   /// and dN/dx = (-+1/h) 1/2 at the cell's four corners, 0 at the stencil's other nodes;
