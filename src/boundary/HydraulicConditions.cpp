@@ -255,8 +255,7 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
   }
 
   // The nodes the conditions correct (the atmosphere's, claimed below, are not among them).
-  t.conditioned.clear();
-  for (const int node : t.corrections.sortedNodes()) t.conditioned.push_back(node);
+  t.conditioned = t.corrections.nodes();  // sorted with the loaded nodes below
 
   // The atmosphere on the free sides no condition covers: seepage-face nodes where no
   // condition owns the node (a condition's node keeps its condition's rule).
@@ -326,8 +325,8 @@ void HydraulicConditions::plan(Real time, Real gravity, const FreeBoundary& boun
     Kokkos::deep_copy(corrections_.normal, normal);
   }
 
-  for (const int node : t.forces.sortedNodes()) t.conditioned.push_back(node);
-  for (const int node : t.head_forces.sortedNodes()) t.conditioned.push_back(node);
+  for (const int node : t.forces.nodes()) t.conditioned.push_back(node);
+  for (const int node : t.head_forces.nodes()) t.conditioned.push_back(node);
   std::sort(t.conditioned.begin(), t.conditioned.end());
   t.conditioned.erase(std::unique(t.conditioned.begin(), t.conditioned.end()), t.conditioned.end());
   toDevice(t.conditioned, "conditioned_node", conditioned_nodes_);

@@ -43,6 +43,7 @@ TEST(NodeTable, KeepsTheFirstValueAndListsTheNodesInOrder) {
   EXPECT_FALSE(table.contains(5));
   EXPECT_FALSE(table.contains(100));  // beyond the nodes seen: not contained
   EXPECT_FALSE(table.contains(-1));
+  EXPECT_EQ(table.nodes(), (std::vector<int>{9, 4, 0}));  // first touches
   EXPECT_EQ(table.sortedNodes(), (std::vector<int>{0, 4, 9}));
 }
 

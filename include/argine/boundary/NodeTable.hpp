@@ -48,6 +48,8 @@ class NodeTable {
   const T& at(int node) const { return values_[slot_[node]]; }
   std::size_t size() const { return nodes_.size(); }
 
+  /// The nodes with an entry, in the order of their first touch.
+  const std::vector<int>& nodes() const { return nodes_; }
   /// The nodes with an entry, in increasing order (valid until the next change).
   const std::vector<int>& sortedNodes() {
     sorted_.assign(nodes_.begin(), nodes_.end());
