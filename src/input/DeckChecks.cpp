@@ -128,10 +128,10 @@ void checkElementAveraging(const Deck& deck) {
       throw InputError("Materials/" + material.name + "/Locking Mitigation/Checkerboard Filter",
                        "applies to element averages: needs Volumetric Strain Averaging or "
                        "Liquid Pressure Averaging: element");
-    if (locking.conjugate_mean_stress && locking.volumetric_strain != IncrementAveraging::Element)
+    if (locking.conjugate_mean_stress && locking.volumetric_strain == IncrementAveraging::None)
       throw InputError("Materials/" + material.name + "/Locking Mitigation/Conjugate Mean Stress",
-                       "applies to element averages of the volumetric strain: needs Volumetric "
-                       "Strain Averaging: element");
+                       "applies to averages of the volumetric strain: needs Volumetric Strain "
+                       "Averaging: element or nodal");
     // The filter maps the cells' checkerboard to zero, so forces conjugate to the filtered
     // strain leave a checkerboard of mean stress and p_L with no force against it (a free
     // mode: V1's p_L error x2.3, cell to cell; 5.9 kPa rms in a slide's p'). The conjugate

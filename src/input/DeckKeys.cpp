@@ -283,12 +283,13 @@ ListSchema lockingMitigationKeys() {
   locking.add(KeySpec::boolean(
                   "Conjugate Mean Stress",
                   "the nodal forces take each point's in-plane mean stress (s'_xx + s'_yy) / 2 - "
-                  "S_L p_L and its p_L in the liquid's force as the element (or patch) "
-                  "average instead of the point's own: the work conjugates of the averaged d "
+                  "S_L p_L and its p_L in the liquid's force averaged as the volumetric strain "
+                  "is (element, patch or nodal) instead of the point's own: the work conjugates of "
+                  "the averaged d "
                   "eps_vol and div v_L, so that forces and strains see one operator (B-bar; a "
                   "symmetric stiffness for any tangent). It keeps a sliding body's cell "
                   "checkerboard as low as Checkerboard Filter does; needs Volumetric Strain "
-                  "Averaging: element and cannot be "
+                  "Averaging: element or nodal and cannot be "
                   "combined with Checkerboard Filter (whose null space, the checkerboard, the "
                   "forces would then not see; doc/theory.md Sec. 3.3.4). false: each point's own")
                   .byDefault(false));

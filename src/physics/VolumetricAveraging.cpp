@@ -49,8 +49,11 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
   }
   strain_ = strain.any();
   pressure_ = pressure.any();
+  AveragingUse mean_stress;  // the conjugate mean stress takes the volumetric strain's average
   for (int m = 0; m < table.count(); ++m)
-    conjugate_ = conjugate_ || table.host(m).locking.conjugate_mean_stress;
+    if (table.host(m).locking.conjugate_mean_stress)
+      mean_stress.add(static_cast<int>(table.host(m).locking.volumetric_strain));
+  conjugate_ = mean_stress.any();
   all_nodal_ = strain_;
   for (int m = 0; m < table.count(); ++m) {
     const PointMaterial& material = table.host(m);
@@ -99,8 +102,8 @@ VolumetricAveraging::VolumetricAveraging(const MaterialTable& table, const Mesh&
   }
   if (strain_) increments_.allocateSums(kChannels, strain, element_rows, nodes);
   if (pressure_) pressure_increments_.allocateSums(1, pressure, element_rows, nodes);
-  // element averages only, never filtered (checkDeck: the filter's null space would be free)
-  if (conjugate_) mean_stresses_.allocateSums(kMeanChannels, element_rows, 0);
+  // never filtered (checkDeck: the filter's null space would be free)
+  if (conjugate_) mean_stresses_.allocateSums(kMeanChannels, mean_stress, element_rows, nodes);
 }
 
 void VolumetricAveraging::averageStrainIncrements(const MaterialTable& table,
@@ -326,7 +329,10 @@ void VolumetricAveraging::averageMeanStresses(const MaterialTable& table,
       KOKKOS_LAMBDA(const int p) {
         const PointMaterial& material = materials_m(pts.material(p));
         const bool wet = carriesLiquid(material.phase);
-        const int mode = material.locking.conjugate_mean_stress ? kAverageElement : kNone;
+        // the operator that averages the point's d eps_vol (element, patch or nodal)
+        const int mode = material.locking.conjugate_mean_stress
+                             ? static_cast<int>(material.locking.volumetric_strain)
+                             : kNone;
         const Real bishop =
             wet ? bishopPorePressure(pts.saturation(p), pts.pressure_liquid(p)) : Real(0);
         weight_p(p) = pts.volume(p);

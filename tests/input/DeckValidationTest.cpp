@@ -337,16 +337,18 @@ TEST(DeckValidation, CheckerboardFilterNeedsAnElementAverageEverywhere) {
                   "'soil' has true)");
 }
 
-TEST(DeckValidation, ConjugateMeanStressNeedsAnElementAverageOfTheStrain) {
-  expectDeckError(withLocking("Volumetric Strain Averaging: nodal, Conjugate Mean Stress: true"),
-                  "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
-                  "needs Volumetric Strain Averaging: element");
-  // an element average of the pressure alone gives the strain nothing to be conjugate to
+TEST(DeckValidation, ConjugateMeanStressNeedsAnAverageOfTheStrain) {
+  // an average of the pressure alone gives the strain nothing to be conjugate to
   expectDeckError(withLocking("Liquid Pressure Averaging: element, Conjugate Mean Stress: true"),
                   "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
-                  "needs Volumetric Strain Averaging: element");
+                  "needs Volumetric Strain Averaging: element or nodal");
+  expectDeckError(withLocking("Conjugate Mean Stress: true"),
+                  "Materials/soil/Locking Mitigation/Conjugate Mean Stress",
+                  "needs Volumetric Strain Averaging: element or nodal");
   EXPECT_NO_THROW(
       parseText(withLocking("Volumetric Strain Averaging: element, Conjugate Mean Stress: true")));
+  EXPECT_NO_THROW(
+      parseText(withLocking("Volumetric Strain Averaging: nodal, Conjugate Mean Stress: true")));
 }
 
 TEST(DeckValidation, ConjugateMeanStressRefusesTheCheckerboardFilter) {

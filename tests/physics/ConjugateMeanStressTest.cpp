@@ -84,19 +84,20 @@ std::array<Real, 2> work(const MaterialPoints& points, const PointRates& rates,
   return w;
 }
 
-/// The soil of the tests: element averages of d eps_vol, forces conjugate (never with the
-/// checkerboard filter: checkDeck).
-MaterialSpec conjugateSoil() {
+/// The soil of the tests: `averaging` of d eps_vol (element by default), forces conjugate
+/// (never with the checkerboard filter: checkDeck).
+MaterialSpec conjugateSoil(IncrementAveraging averaging = IncrementAveraging::Element) {
   MaterialSpec soil = test::elasticMaterial("soil", PhaseModel::Unsaturated, 5e7, 0.3, 0.4);
-  soil.locking.volumetric_strain = IncrementAveraging::Element;
+  soil.locking.volumetric_strain = averaging;
   soil.locking.conjugate_mean_stress = true;
   return soil;
 }
 
-TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheAveragedIncrements) {
-  const Mesh mesh = test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Quad4);
+/// The forces with the shifts do the work of the averaged increments, to rounding, and the
+/// points' own stresses do not.
+void expectForcesDoTheWorkOfTheAveragedIncrements(const Mesh& mesh, IncrementAveraging mode) {
   MaterialPoints points = test::seedUniform(mesh);
-  const MaterialSpec soil = conjugateSoil();
+  const MaterialSpec soil = conjugateSoil(mode);
   const MaterialTable table({soil});
   PointShapes shapes;
   evaluatePointShapes(mesh, points, shapes);
@@ -126,6 +127,21 @@ TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheAveragedIncrements) {
     // the points' own stresses do other work: the test can fail
     EXPECT_GT(std::abs(own[c] - of_averaged[c]), 1e-3 * scale) << (c == 0 ? "mixture" : "liquid");
   }
+}
+
+TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheAveragedIncrements) {
+  expectForcesDoTheWorkOfTheAveragedIncrements(
+      test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Quad4), IncrementAveraging::Element);
+}
+
+// The nodal average q_p <- sum_i N_ip (sum_q N_iq V_q q_q / sum_q N_iq V_q) is self-adjoint in
+// the weights V too (V_p A_pq is symmetric), so its conjugate is the same nodal average of the
+// mean stress: B-bar for the nodal mixed discretisation.
+TEST(ConjugateMeanStress, TheForcesDoTheWorkOfTheNodallyAveragedIncrements) {
+  expectForcesDoTheWorkOfTheAveragedIncrements(
+      test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Quad4), IncrementAveraging::Nodal);
+  expectForcesDoTheWorkOfTheAveragedIncrements(
+      test::rectangleMesh(3, 3, 1.5, 1.5, ElementType::Tri3), IncrementAveraging::Nodal);
 }
 
 TEST(ConjugateMeanStress, ShiftsAreTheCellMeanLessThePointsOwn) {

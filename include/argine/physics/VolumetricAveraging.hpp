@@ -25,15 +25,16 @@
 /// (4.13) and M_L = n rho_L V. sum n V d p_L is kept, so the liquid mass is kept to first
 /// order in d p_L / K_L.
 ///
-/// Conjugate mean stress (`Conjugate Mean Stress`, element averaging of d eps_vol): the strain
-/// a point is given, eps_p + (A a)_e(p) - a_p with a the volumetric part and (A a)_e the
-/// average of its element (or patch), does virtual work sum_p V_p s_p : d eps_p with the
-/// in-plane mean stress m_p = (s_xx + s_yy) / 2 replaced by (A m)_e(p): the same average of m
-/// with weight V (A is self-adjoint in the weights V). So the nodal forces take the mixture's
-/// total mean stress m' - S_L p_L and the liquid's p_L (the conjugate of the averaged div v_L)
-/// as their element's averages: B-bar, a symmetric stiffness for any tangent, where the
-/// point's own mean stress made the coupling of neighbouring cells one-sided and a sliding
-/// body grew the cells' checkerboard. Never with the checkerboard filter F (checkDeck): F
+/// Conjugate mean stress (`Conjugate Mean Stress`, element or nodal averaging of d eps_vol):
+/// the strain a point is given, eps_p + (A a)_p - a_p with a the volumetric part and (A a)_p
+/// its average (element, patch or nodal), does virtual work sum_p V_p s_p : d eps_p with the
+/// in-plane mean stress m_p = (s_xx + s_yy) / 2 replaced by (A m)_p: the same average of m
+/// with weight V (every one of these A is self-adjoint in the weights V: V_p A_pq symmetric). So
+/// the nodal forces take the mixture's total mean stress m' - S_L p_L and the liquid's p_L (the
+/// conjugate of the averaged div v_L) averaged as d eps_vol is: B-bar, a symmetric stiffness for
+/// any tangent, where the point's own mean stress made the coupling of neighbouring cells one-sided
+/// and a sliding body grew the cells' checkerboard (and, with the nodal average, dilatant plastic
+/// flow ran away: doc/theory.md Sec. 3.3.4). Never with the checkerboard filter F (checkDeck): F
 /// maps the checkerboard to zero, and forces from F A m would leave a checkerboard of m and
 /// p_L without any force against it (a free mode; V1's p_L error x2.3, cell to cell).
 
