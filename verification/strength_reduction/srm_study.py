@@ -15,8 +15,8 @@ and prints the table, the changes between meshes, the observed order and the Ric
 extrapolation of FS_SRM. --conjugate gives the nodal averaging forces conjugate to it
 (`Conjugate Mean Stress: true`, doc/theory.md Sec. 3.3.4); --dilatancy sets the soil's
 dilatancy angle (deg; above 0 the mesh box is raised by 1 m, so that the crest can rise
-into it). The CTest runs the deck as written (neither). --check (the CTest) fails unless every run brackets FS_SRM to
-+- 0.01 and, with nodal averaging on the three finest meshes, the extrapolated FS_SRM lies
+into it). The CTest runs the deck as written (neither). --check (the CTest) fails unless
+every run brackets FS_SRM to +- 0.01 and, with nodal averaging on the three finest meshes, the extrapolated FS_SRM lies
 within 3 % of Bishop's F on the finest mesh (SRM and LEM on a homogeneous slope: Griffiths
 and Lane 1999, Dawson et al. 1999 report agreement to a few per cent).
 """
