@@ -157,6 +157,30 @@ void checkElementAveraging(const Deck& deck) {
   }
 }
 
+/// Conjugate Mean Stress: one choice for every material averaging its volumetric strain the
+/// same way (element or nodal). Their points share the averages' sums, and the forces do the
+/// work of the averaged increments only if the mean stress is averaged over the same points as
+/// the strain (doc/theory.md Sec. 3.3.4): at a node or cell shared by a conjugate and a
+/// non-conjugate material the two averages would differ.
+void checkConjugateMeanStress(const Deck& deck) {
+  for (const IncrementAveraging mode : {IncrementAveraging::Element, IncrementAveraging::Nodal}) {
+    const MaterialSpec* first = nullptr;  // the first material averaging this way
+    for (const MaterialSpec& material : deck.materials) {
+      if (material.locking.volumetric_strain != mode) continue;
+      if (first == nullptr) {
+        first = &material;
+      } else if (material.locking.conjugate_mean_stress != first->locking.conjugate_mean_stress) {
+        throw InputError(
+            "Materials/" + material.name + "/Locking Mitigation/Conjugate Mean Stress",
+            std::string("must be the same for every material with Volumetric Strain Averaging: ") +
+                (mode == IncrementAveraging::Nodal ? "nodal" : "element") +
+                " (they share the averages' sums; material '" + first->name + "' has " +
+                (first->locking.conjugate_mean_stress ? "true" : "false") + ")");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void checkDeck(const Deck& deck) {
@@ -180,6 +204,7 @@ void checkDeck(const Deck& deck) {
   }
 
   checkElementAveraging(deck);
+  checkConjugateMeanStress(deck);
   input_detail::checkStageAdditions(deck);     // issue P4
   input_detail::checkFactorOfSafety(deck);     // issue P13
   input_detail::checkStrengthReduction(deck);  // issue P13

@@ -291,7 +291,9 @@ ListSchema lockingMitigationKeys() {
                   "checkerboard as low as Checkerboard Filter does; needs Volumetric Strain "
                   "Averaging: element or nodal and cannot be "
                   "combined with Checkerboard Filter (whose null space, the checkerboard, the "
-                  "forces would then not see; doc/theory.md Sec. 3.3.4). false: each point's own")
+                  "forces would then not see; doc/theory.md Sec. 3.3.4); one choice for all "
+                  "materials that average the volumetric strain the same way (they share the "
+                  "sums). false: each point's own")
                   .byDefault(false));
   locking.add(KeySpec::real("Liquid Head Stabilisation", "-",
                             "alpha: each step a point exchanges liquid at alpha k/g (capped for "

@@ -362,6 +362,31 @@ TEST(DeckValidation, ConjugateMeanStressRefusesTheCheckerboardFilter) {
       "true")));
 }
 
+TEST(DeckValidation, ConjugateMeanStressIsOneChoiceForMaterialsSharingAnAverage) {
+  // A second material, in block clay, averaging its volumetric strain the same way as soil
+  // with or without the conjugate forces.
+  auto clay = [](const std::string& mode, bool conjugate) {
+    return "    clay:\n      Block: clay\n      Phase Model: dry\n      Porosity: 0.3\n"
+           "      Solid Density (kg/m3): 2650\n      Solid: {Model: linear elastic, Young's "
+           "Modulus (Pa): 5.0e6, Poisson's Ratio: 0.3}\n      Locking Mitigation: {Volumetric "
+           "Strain Averaging: " +
+           mode + ", Conjugate Mean Stress: " + (conjugate ? "true" : "false") + "}\n  Stages:";
+  };
+  const std::string key = "Materials/clay/Locking Mitigation/Conjugate Mean Stress";
+  for (const std::string mode : {"nodal", "element"}) {
+    const std::string soil =
+        withLocking("Volumetric Strain Averaging: " + mode + ", Conjugate Mean Stress: true");
+    expectDeckError(replaced(soil, "  Stages:", clay(mode, false)), key,
+                    "must be the same for every material with Volumetric Strain Averaging: " +
+                        mode + " (they share the averages' sums; material 'soil' has true)");
+    EXPECT_NO_THROW(parseText(replaced(soil, "  Stages:", clay(mode, true))));
+  }
+  // averaged another way, the second material shares no sums with the first
+  const std::string soil =
+      withLocking("Volumetric Strain Averaging: nodal, Conjugate Mean Stress: true");
+  EXPECT_NO_THROW(parseText(replaced(soil, "  Stages:", clay("element", false))));
+}
+
 TEST(DeckValidation, FirstErrorInDeckOrderIsReported) {
   std::string deck = replaced(kBaseDeck, "Porosity: 0.4", "Porosity: 2");
   deck = replaced(deck, "Element Size (m): 0.1", "Element Size: 0.1");
