@@ -744,11 +744,17 @@ ListSchema strengthReductionKeys() {
                           "displacement = the mobilised mass (points that moved at least half "
                           "the most) moves faster in the trial's last quarter than in its "
                           "third, and at least Minimum Displacement (m) in all; either = "
-                          "either of them. The CSV reports both for every trial")
+                          "either of them; continuing displacement = the mobilised mass still "
+                          "moves at least Minimum Displacement (m) over the trial's last quarter "
+                          "(under Local Damping a failing mass slides at a steady rate rather "
+                          "than faster, while one that holds comes to rest). The CSV reports "
+                          "all three for every trial")
               .byDefault(std::string("non-convergence")));
   srm.add(KeySpec::real("Minimum Displacement (m)", "m",
-                        "mean displacement of the mobilised mass below which a trial does not "
-                        "fail by accelerating displacement")
+                        "mean displacement of the mobilised mass that counts as motion: over "
+                        "the whole trial for accelerating displacement (below it a trial does "
+                        "not fail), over the trial's last quarter for continuing displacement "
+                        "(at or above it a trial fails)")
               .above(0)
               .byDefault(1e-3));
   return srm;

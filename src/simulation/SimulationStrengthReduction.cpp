@@ -1,8 +1,8 @@
 // A strength-reduction stage (P13 item 3): trials from the state the stage found, each with
 // the strength of the Mohr-Coulomb materials divided by a factor F
-// (materials/SolidModel.hpp reducedStrength), judged by non-convergence and by accelerating
-// displacement (StrengthReductionTrial.hpp), F chosen by StrengthReductionSearch. The stage
-// leaves the points, the solver and the materials as it found them.
+// (materials/SolidModel.hpp reducedStrength), judged by non-convergence, by accelerating and by
+// continuing displacement (StrengthReductionTrial.hpp), F chosen by StrengthReductionSearch. The
+// stage leaves the points, the solver and the materials as it found them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -124,7 +124,8 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
                                                  "mobilised_points",
                                                  "mobilised_displacement",
                                                  "third_quarter_rate",
-                                                 "last_quarter_rate"};
+                                                 "last_quarter_rate",
+                                                 "continuing"};
     const std::vector<std::string> point_columns{"time",
                                                  "factor",
                                                  "failed",
@@ -229,14 +230,16 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
     // The points are gathered on rank 0 only: its verdict is every rank's, so that all ranks
     // follow one search.
     if (distributed()) {
-      int accelerating = trend.accelerating ? 1 : 0;
-      MPI_Bcast(&accelerating, 1, MPI_INT, 0, MPI_COMM_WORLD);
-      trend.accelerating = accelerating != 0;
+      int verdicts[2] = {trend.accelerating ? 1 : 0, trend.continuing ? 1 : 0};
+      MPI_Bcast(verdicts, 2, MPI_INT, 0, MPI_COMM_WORLD);
+      trend.accelerating = verdicts[0] != 0;
+      trend.continuing = verdicts[1] != 0;
     }
     // Not overruled by the relaxation: a mass creeping at a few mm/s carries a kinetic energy
     // below 1e-6 of a slope's stored elastic energy, so a trial can pass for relaxed while
     // its mobilised mass speeds up (the dry slope at 0.125 m, F = 1.05: 1.1 -> 1.2 mm/s).
     trial.accelerating = trend.accelerating || !stopped.empty();
+    trial.continuing = trend.continuing || !stopped.empty();
     const bool failed = trial.failed(spec.criterion);
     search.record(trial);
     if (csv)
@@ -244,7 +247,7 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
                      trial.converged ? 1.0 : 0.0, trial.accelerating ? 1.0 : 0.0,
                      failed ? 1.0 : 0.0, relaxation.ratio(), elapsed, static_cast<Real>(steps),
                      trend.largest, static_cast<Real>(trend.mobilised_points), trend.mean,
-                     trend.earlier_rate, trend.later_rate});
+                     trend.earlier_rate, trend.later_rate, trial.continuing ? 1.0 : 0.0});
     if (failed && factor < failing_factor) {
       failing_factor = factor;
       failing_map = mechanismById(end_points, ids, start_u, start_strain);
@@ -303,7 +306,9 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
       " trials: " + describe(spec.criterion) + " by " +
       deckWord(kStrengthReductionCriterionWords, spec.criterion) + "; by non-convergence " +
       describe(StrengthReductionCriterion::NonConvergence) + "; by accelerating displacement " +
-      describe(StrengthReductionCriterion::AcceleratingDisplacement) + " (" + deck_.output.name +
+      describe(StrengthReductionCriterion::AcceleratingDisplacement) +
+      "; by continuing displacement " +
+      describe(StrengthReductionCriterion::ContinuingDisplacement) + " (" + deck_.output.name +
       "_strength_reduction.csv, mechanism in " + deck_.output.name +
       "_strength_reduction_points.csv)");
   if (deck_.factor_of_safety.enabled && last_factor_of_safety_ > 0) {

@@ -35,6 +35,7 @@ DisplacementTrend displacementTrend(const std::vector<Real>& start, const std::v
   trend.earlier_rate = earlier / count / (t_b - t_a);
   trend.later_rate = later / count / (t_c - t_b);
   trend.accelerating = trend.later_rate > trend.earlier_rate && trend.mean >= minimum_displacement;
+  trend.continuing = later / count >= minimum_displacement;
   return trend;
 }
 

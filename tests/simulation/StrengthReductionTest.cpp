@@ -105,6 +105,52 @@ TEST(StrengthReductionSearch, EachCriterionHasItsBracket) {
   EXPECT_EQ(search.bracket(StrengthReductionCriterion::Either).failing, nc.failing);
 }
 
+TEST(DisplacementTrend, ContinuingIsTheLastQuartersMotion) {
+  // point 0 slides along x at a steady 2 mm/s from 1 to 3 s (not faster): 2 mm in the last
+  // interval, not accelerating; with a minimum of 2.5 mm it is not continuing either
+  const std::vector<Real> start{0, 0, 0, 0};
+  const std::vector<Real> a{0.010, 0, 0, 0};
+  const std::vector<Real> b{0.012, 0, 0, 0};
+  const std::vector<Real> c{0.014, 0, 0, 0};
+  const DisplacementTrend steady = displacementTrend(start, a, b, c, 1, 2, 3, 1e-3);
+  EXPECT_NEAR(steady.later_rate, 0.002, 1e-15);
+  EXPECT_FALSE(steady.accelerating);
+  EXPECT_TRUE(steady.continuing);
+  EXPECT_FALSE(displacementTrend(start, a, b, c, 1, 2, 3, 2.5e-3).continuing);
+  // a mass that came to rest after the first interval: 10 mm moved, none in the last
+  const std::vector<Real> rest{0.012, 0, 0, 0};
+  EXPECT_FALSE(displacementTrend(start, a, b, rest, 1, 2, 3, 1e-3).continuing);
+  // the last interval 0.5 s long: 1.1 mm in it (2.2 mm/s) counts at a 1 mm minimum, not at
+  // 1.5 mm: the displacement over the interval is what counts, not the rate
+  const std::vector<Real> c_short{0.0131, 0, 0, 0};
+  const DisplacementTrend short_last = displacementTrend(start, a, b, c_short, 1, 2, 2.5, 1e-3);
+  EXPECT_NEAR(short_last.later_rate, 0.0022, 1e-12);
+  EXPECT_TRUE(short_last.continuing);
+  EXPECT_FALSE(displacementTrend(start, a, b, c_short, 1, 2, 2.5, 1.5e-3).continuing);
+}
+
+TEST(StrengthReductionSearch, ContinuingDisplacementHasItsOwnBracket) {
+  StrengthReductionSpec spec;
+  spec.criterion = StrengthReductionCriterion::ContinuingDisplacement;
+  StrengthReductionSearch search(spec);
+  // relaxed up to 1.12, still moving above 1.09, accelerating nowhere
+  while (!search.done()) {
+    StrengthReductionTrial t;
+    t.factor = search.next();
+    t.converged = t.factor <= 1.12;
+    t.continuing = t.factor > 1.09;
+    EXPECT_EQ(t.failed(StrengthReductionCriterion::ContinuingDisplacement), t.continuing);
+    EXPECT_EQ(t.failed(StrengthReductionCriterion::Either), !t.converged);
+    search.record(t);
+  }
+  const auto cd = search.result();
+  EXPECT_LE(cd.halfWidth(), 0.01);
+  EXPECT_LE(cd.holding, 1.09);
+  EXPECT_GT(cd.failing, 1.09);
+  // the trials followed this criterion, so the others' brackets come from the same factors
+  EXPECT_FALSE(search.bracket(StrengthReductionCriterion::AcceleratingDisplacement).closed());
+}
+
 TEST(DisplacementTrend, AcceleratingDeceleratingAndCreep) {
   // point 0 slides along x; point 1 barely moves (not mobilised: < half the largest)
   const std::vector<Real> start{0, 0, 0, 0};
@@ -124,6 +170,7 @@ TEST(DisplacementTrend, AcceleratingDeceleratingAndCreep) {
   for (auto* v : {&a2, &b2, &c2})
     for (Real& x : *v) x *= 1e-3;
   EXPECT_FALSE(displacementTrend(start, a2, b2, c2, 1, 2, 3, 1e-3).accelerating);
+  EXPECT_FALSE(displacementTrend(start, a2, b2, c2, 1, 2, 3, 1e-3).continuing);
   EXPECT_THROW(displacementTrend(start, a, b, fast, 2, 1, 3, 1e-3), std::invalid_argument);
   EXPECT_THROW(displacementTrend(start, a, b, {0, 0}, 1, 2, 3, 1e-3), std::invalid_argument);
 }
@@ -191,6 +238,12 @@ TEST(StrengthReductionDeck, NeedsRelaxationAndAFrictionalMaterial) {
   EXPECT_EQ(deck.stages[1].strength_reduction.criterion,
             StrengthReductionCriterion::NonConvergence);
   EXPECT_FALSE(deck.stages[0].strength_reduction.enabled);
+  EXPECT_EQ(
+      parse(
+          slopeDeck("      Strength Reduction: {Failure Criterion: continuing displacement}", true))
+          .stages[1]
+          .strength_reduction.criterion,
+      StrengthReductionCriterion::ContinuingDisplacement);
 
   std::string no_relaxation = slopeDeck(srm, true);
   const std::string relax = "      Relaxation: {Kinetic Energy Ratio: 1.0e-6, Window (s): 0.5}\n";

@@ -265,6 +265,8 @@ enum class StrengthReductionCriterion {
   NonConvergence,            ///< the quasi-static solution does not relax within the trial
   AcceleratingDisplacement,  ///< the mobilised mass moves faster in the trial's second half
   Either,                    ///< either of the two
+  /// the mobilised mass still moves Minimum Displacement (m) in the trial's last quarter
+  ContinuingDisplacement,
 };
 
 /// A stage's `Strength Reduction` (P13 item 3): the stage becomes a strength-reduction

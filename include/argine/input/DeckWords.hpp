@@ -78,6 +78,7 @@ inline constexpr DeckWord<StrengthReductionCriterion> kStrengthReductionCriterio
     {"non-convergence", StrengthReductionCriterion::NonConvergence},
     {"accelerating displacement", StrengthReductionCriterion::AcceleratingDisplacement},
     {"either", StrengthReductionCriterion::Either},
+    {"continuing displacement", StrengthReductionCriterion::ContinuingDisplacement},
 };
 
 inline constexpr DeckWord<ShapeFamily> kShapeFamilyWords[] = {

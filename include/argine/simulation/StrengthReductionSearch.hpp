@@ -8,9 +8,9 @@
 /// FS_SRM is their mean, +- tolerance. The search also ends at the maximum factor (the
 /// slope holds there: FS_SRM > maximum) and at the minimum one (it fails there).
 ///
-/// Each trial is judged by two criteria (StrengthReductionTrial.hpp); the search follows the
+/// Each trial is judged by three criteria (StrengthReductionTrial.hpp); the search follows the
 /// deck's Failure Criterion, and bracket() gives each criterion's own bracket from the same
-/// trials, so both are reported.
+/// trials, so all are reported.
 
 #include <limits>
 #include <vector>
@@ -24,12 +24,15 @@ struct StrengthReductionTrial {
   Real factor = 1;            ///< F (-)
   bool converged = false;     ///< relaxed within the trial (not failed by non-convergence)
   bool accelerating = false;  ///< failed by accelerating displacement
+  bool continuing = false;    ///< failed by continuing displacement
   bool failed(StrengthReductionCriterion criterion) const {
     switch (criterion) {
       case StrengthReductionCriterion::NonConvergence:
         return !converged;
       case StrengthReductionCriterion::AcceleratingDisplacement:
         return accelerating;
+      case StrengthReductionCriterion::ContinuingDisplacement:
+        return continuing;
       case StrengthReductionCriterion::Either:
         break;
     }

@@ -10,6 +10,12 @@
 /// balance gravity keeps an unbalanced force and moves faster in the last quarter; a mass
 /// that finds equilibrium slows down. A mean displacement below a minimum (creep of a mass at
 /// rest) never counts as failure, nor does a trial that came to rest (the caller's test).
+///
+/// CONTINUING displacement: the mobilised mass still moves at least that minimum over the
+/// last quarter. Under local damping a mass that cannot stand slides at a terminal rate that
+/// grows with F rather than faster and faster (the dry slope on 0.25 m with psi = phi': at rest
+/// with a few um/s at F = 1.08, a steady 1.4 mm/s at 1.10; verification/strength_reduction), so
+/// "accelerating" is not monotonic in F there, while "still moving" is.
 
 #include <vector>
 
@@ -24,6 +30,7 @@ struct DisplacementTrend {
   Real earlier_rate = 0;      ///< its mean displacement rate over [t_a, t_b] (m/s)
   Real later_rate = 0;        ///< over [t_b, t_c] (m/s)
   bool accelerating = false;  ///< later_rate > earlier_rate and mean >= minimum_displacement
+  bool continuing = false;    ///< later_rate (t_c - t_b) >= minimum_displacement
 };
 
 /// `start`, `a`, `b`, `c`: the points' displacement vectors (x, y per point, the same points
