@@ -3,22 +3,26 @@
 "Strength reduction"), under mesh refinement.
 
   srm_study.py --argine ARGINE --work DIR [--sizes 0.5 0.25 0.125] [--locking none nodal]
-               [--conjugate] [--dilatancy DEG] [--check]
+               [--own-mean-stress] [--dilatancy DEG] [--criterion WORD] [--check]
 
-Runs srm_slope.yaml (0.25 m, nodal volumetric averaging: the deck as written) and the same
-deck with another Element Size (m) and Volumetric Strain Averaging, each in its own folder
-under DIR, and reads from each log FS_SRM (+- its bracket) and Bishop's F on the same state
-(the Factor Of Safety section at the SRM stage's start). Writes
+Runs srm_slope.yaml (0.25 m, associated flow, nodal volumetric averaging with forces
+conjugate to it, failure by continuing displacement: the deck as written) and the same deck
+with another Element Size (m) and Volumetric Strain Averaging, each in its own folder under
+DIR, and reads from each log FS_SRM (+- its bracket) and Bishop's F on the same state (the
+Factor Of Safety section at the SRM stage's start). Writes
   DIR/srm_slope.csv          h, points, FS_SRM, half width, Bishop F, wall s per run
   DIR/srm_slope.png          FS_SRM against h, and |FS_SRM - F_Bishop| against wall time
 and prints the table, the changes between meshes, the observed order and the Richardson
-extrapolation of FS_SRM. --conjugate gives the nodal averaging forces conjugate to it
-(`Conjugate Mean Stress: true`, doc/theory.md Sec. 3.3.4); --dilatancy sets the soil's
-dilatancy angle (deg; above 0 the mesh box is raised by 1 m, so that the crest can rise
-into it). The CTest runs the deck as written (neither). --check (the CTest) fails unless
-every run brackets FS_SRM to +- 0.01 and, with nodal averaging on the three finest meshes, the extrapolated FS_SRM lies
-within 3 % of Bishop's F on the finest mesh (SRM and LEM on a homogeneous slope: Griffiths
-and Lane 1999, Dawson et al. 1999 report agreement to a few per cent).
+extrapolation of FS_SRM. --own-mean-stress gives the forces each point's own mean stress
+instead of the conjugate average (`Conjugate Mean Stress: false`, doc/theory.md Sec. 3.3.4;
+unstable under dilatant flow); --dilatancy sets the soil's dilatancy angle (deg; 0: the
+thesis' non-associated flow); --criterion the trials' Failure Criterion (e.g.
+non-convergence, the deck's before 7 Dec 2026). The CTest runs the deck as written. --check
+(the CTest) fails unless every run brackets FS_SRM to +- 0.01 and, with nodal averaging on the
+three finest meshes, the extrapolated FS_SRM lies within 3 % of Bishop's F on the finest mesh
+(SRM with associated flow and LEM on a homogeneous slope: Griffiths and Lane 1999, Dawson et
+al. 1999 report agreement to a few per cent; with psi = 0 the answer on this slope depends on
+the mesh and the damping, README.md).
 """
 import argparse
 import csv
@@ -35,8 +39,9 @@ LEM_LINE = re.compile(r"limit equilibrium on the same state \(last output\): F =
 POINTS_LINE = re.compile(r"argine: \d+ steps, (\d+) points")
 
 
-def variant(text, size, locking, directory, conjugate=False, dilatancy=None):
+def variant(text, size, locking, directory, conjugate=True, dilatancy=None, criterion=None):
     text = re.sub(r"Element Size \(m\): [0-9.]+", f"Element Size (m): {size}", text)
+    text = re.sub(r", Conjugate Mean Stress: \w+", "", text)
     averaging = f"Volumetric Strain Averaging: {locking}"
     if conjugate and locking != "none":
         averaging += ", Conjugate Mean Stress: true"
@@ -44,18 +49,19 @@ def variant(text, size, locking, directory, conjugate=False, dilatancy=None):
     if dilatancy is not None:
         text = re.sub(r"Dilatancy Angle \(deg\): [0-9.]+", f"Dilatancy Angle (deg): {dilatancy:g}",
                       text)
-        if dilatancy > 0:
-            text = text.replace("Upper Right (m): [16.0, 9.0]", "Upper Right (m): [16.0, 10.0]")
+    if criterion is not None:
+        text = re.sub(r"Failure Criterion: [a-z -]+\}", f"Failure Criterion: {criterion}}}", text)
     return re.sub(r"Directory: \S+,", f"Directory: {directory},", text)
 
 
-def run(argine, work, size, locking, conjugate=False, dilatancy=None):
-    name = f"h{size}_{locking}" + ("_conjugate" if conjugate else "") + (
-        f"_psi{dilatancy:g}" if dilatancy is not None else "")
+def run(argine, work, size, locking, conjugate=True, dilatancy=None, criterion=None):
+    name = f"h{size}_{locking}" + ("" if conjugate else "_own") + (
+        f"_psi{dilatancy:g}" if dilatancy is not None else "") + (
+        "_" + criterion.replace(" ", "_") if criterion else "")
     folder = os.path.join(work, name)
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(HERE, "srm_slope.yaml")) as handle:
-        deck = variant(handle.read(), size, locking, folder, conjugate, dilatancy)
+        deck = variant(handle.read(), size, locking, folder, conjugate, dilatancy, criterion)
     path = os.path.join(folder, "srm_slope.yaml")
     with open(path, "w") as handle:
         handle.write(deck)
@@ -112,12 +118,14 @@ def main():
     parser.add_argument("--work", required=True)
     parser.add_argument("--sizes", type=float, nargs="+", default=[0.5, 0.25, 0.125])
     parser.add_argument("--locking", nargs="+", default=["nodal"])
-    parser.add_argument("--conjugate", action="store_true")
+    parser.add_argument("--own-mean-stress", action="store_true")
     parser.add_argument("--dilatancy", type=float)
+    parser.add_argument("--criterion")
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
-    rows = [run(args.argine, args.work, h, lock, args.conjugate, args.dilatancy)
+    rows = [run(args.argine, args.work, h, lock, not args.own_mean_stress, args.dilatancy,
+                args.criterion)
             for lock in args.locking for h in args.sizes]
     with open(os.path.join(args.work, "srm_slope.csv"), "w", newline="") as handle:
         writer = csv.DictWriter(handle, fieldnames=list(rows[0]))
