@@ -39,6 +39,22 @@ std::vector<Real> searchAgainst(StrengthReductionSearch& search, Real limit) {
   return tried;
 }
 
+/// Runs a search that follows `criterion` to its end, each trial judged by `judge(trial)`
+/// (its factor set).
+template <class Judge>
+StrengthReductionSearch searchJudgedBy(StrengthReductionCriterion criterion, Judge judge) {
+  StrengthReductionSpec spec;
+  spec.criterion = criterion;
+  StrengthReductionSearch search(spec);
+  while (!search.done()) {
+    StrengthReductionTrial trial;
+    trial.factor = search.next();
+    judge(trial);
+    search.record(trial);
+  }
+  return search;
+}
+
 TEST(StrengthReductionSearch, BracketsThenBisects) {
   StrengthReductionSpec spec;  // F from 1, step 0.2, tolerance 0.01, within [0.1, 5]
   StrengthReductionSearch search(spec);
@@ -80,17 +96,12 @@ TEST(StrengthReductionSearch, DownwardsAndAtTheLimits) {
 }
 
 TEST(StrengthReductionSearch, EachCriterionHasItsBracket) {
-  StrengthReductionSpec spec;
-  spec.criterion = StrengthReductionCriterion::NonConvergence;
-  StrengthReductionSearch search(spec);
   // non-convergence above 1.1, accelerating displacement only above 1.17
-  while (!search.done()) {
-    StrengthReductionTrial t;
-    t.factor = search.next();
-    t.converged = t.factor <= 1.1;
-    t.accelerating = t.factor > 1.17;
-    search.record(t);
-  }
+  const StrengthReductionSearch search =
+      searchJudgedBy(StrengthReductionCriterion::NonConvergence, [](StrengthReductionTrial& t) {
+        t.converged = t.factor <= 1.1;
+        t.accelerating = t.factor > 1.17;
+      });
   const auto nc = search.bracket(StrengthReductionCriterion::NonConvergence);
   const auto ad = search.bracket(StrengthReductionCriterion::AcceleratingDisplacement);
   EXPECT_LE(nc.halfWidth(), 0.01);
@@ -130,19 +141,14 @@ TEST(DisplacementTrend, ContinuingIsTheLastQuartersMotion) {
 }
 
 TEST(StrengthReductionSearch, ContinuingDisplacementHasItsOwnBracket) {
-  StrengthReductionSpec spec;
-  spec.criterion = StrengthReductionCriterion::ContinuingDisplacement;
-  StrengthReductionSearch search(spec);
   // relaxed up to 1.12, still moving above 1.09, accelerating nowhere
-  while (!search.done()) {
-    StrengthReductionTrial t;
-    t.factor = search.next();
-    t.converged = t.factor <= 1.12;
-    t.continuing = t.factor > 1.09;
-    EXPECT_EQ(t.failed(StrengthReductionCriterion::ContinuingDisplacement), t.continuing);
-    EXPECT_EQ(t.failed(StrengthReductionCriterion::Either), !t.converged);
-    search.record(t);
-  }
+  const StrengthReductionSearch search = searchJudgedBy(
+      StrengthReductionCriterion::ContinuingDisplacement, [](StrengthReductionTrial& t) {
+        t.converged = t.factor <= 1.12;
+        t.continuing = t.factor > 1.09;
+        EXPECT_EQ(t.failed(StrengthReductionCriterion::ContinuingDisplacement), t.continuing);
+        EXPECT_EQ(t.failed(StrengthReductionCriterion::Either), !t.converged);
+      });
   const auto cd = search.result();
   EXPECT_LE(cd.halfWidth(), 0.01);
   EXPECT_LE(cd.holding, 1.09);
