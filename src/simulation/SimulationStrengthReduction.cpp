@@ -302,14 +302,16 @@ void Simulation::runStrengthReductionStage(const StageSpec& stage) {
       std::snprintf(text, sizeof text, "no trial");
     return std::string(text);
   };
+  // the search's bracket, then every single criterion's from the same trials ("either" is two
+  // of them together)
+  std::string brackets;
+  for (const auto& word : kStrengthReductionCriterionWords)
+    if (word.value != StrengthReductionCriterion::Either)
+      brackets += std::string("; by ") + word.word + " " + describe(word.value);
   log("stage '" + stage.name + "': strength reduction, " + std::to_string(search.trials().size()) +
       " trials: " + describe(spec.criterion) + " by " +
-      deckWord(kStrengthReductionCriterionWords, spec.criterion) + "; by non-convergence " +
-      describe(StrengthReductionCriterion::NonConvergence) + "; by accelerating displacement " +
-      describe(StrengthReductionCriterion::AcceleratingDisplacement) +
-      "; by continuing displacement " +
-      describe(StrengthReductionCriterion::ContinuingDisplacement) + " (" + deck_.output.name +
-      "_strength_reduction.csv, mechanism in " + deck_.output.name +
+      deckWord(kStrengthReductionCriterionWords, spec.criterion) + brackets + " (" +
+      deck_.output.name + "_strength_reduction.csv, mechanism in " + deck_.output.name +
       "_strength_reduction_points.csv)");
   if (deck_.factor_of_safety.enabled && last_factor_of_safety_ > 0) {
     char line[256];
